@@ -1,0 +1,7 @@
+option(MILLDYN_WERROR "Treat warnings as errors" OFF)
+function(milldyn_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow)
+  if(MILLDYN_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()

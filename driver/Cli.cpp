@@ -1,0 +1,198 @@
+#include "driver/Cli.h"
+
+#include "driver/ModelFile.h"
+#include "driver/SceneBuilder.h"
+#include "driver/analyses/Analysis.h"
+#include "driver/outputs/AtomicFile.h"
+#include "driver/outputs/Writers.h"
+#include "plugins/ElementRegistry.h"
+#include "validation/cases/ValidationCases.h"
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <unistd.h>
+
+namespace milldyn {
+namespace {
+
+constexpr const char* kVersion = "0.1.0";
+
+const char* kUsage =
+    "usage:\n"
+    "  milldyn run MODEL.yaml [--out DIR] [--set path=value]... [--integrator NAME]\n"
+    "                         [--accuracy TOL] [--end-time T] [--quiet]\n"
+    "  milldyn info MODEL.yaml [--set path=value]...\n"
+    "  milldyn validate [--filter TEXT] [--json]\n"
+    "  milldyn --version | --help\n";
+
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct Arguments {
+    std::string command;
+    std::string model;
+    std::string outDir = "out";
+    std::vector<Override> overrides;
+    std::string filter;
+    bool json = false;
+    bool quiet = false;
+};
+
+Arguments parseArguments(const std::vector<std::string>& args) {
+    Arguments a;
+    if (args.empty()) throw UsageError("no command given");
+    a.command = args[0];
+    auto value = [&](std::size_t& i) -> const std::string& {
+        if (i + 1 >= args.size()) throw UsageError(args[i] + " needs a value");
+        return args[++i];
+    };
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg == "--out") a.outDir = value(i);
+        else if (arg == "--set") a.overrides.push_back(parseOverride(value(i)));
+        else if (arg == "--integrator") a.overrides.push_back({"integrator.name", value(i)});
+        else if (arg == "--accuracy") a.overrides.push_back({"integrator.accuracy", value(i)});
+        else if (arg == "--end-time") a.overrides.push_back({"scenario.end_time", value(i)});
+        else if (arg == "--filter") a.filter = value(i);
+        else if (arg == "--json") a.json = true;
+        else if (arg == "--quiet") a.quiet = true;
+        else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
+        else if (a.model.empty()) a.model = arg;
+        else throw UsageError("unexpected argument " + arg);
+    }
+    if ((a.command == "run" || a.command == "info") && a.model.empty())
+        throw UsageError(a.command + " needs a model file");
+    return a;
+}
+
+std::string describeValue(double v, const std::string& unit) {
+    std::ostringstream s;
+    s << std::setprecision(6) << v << ' ' << unit;
+    if (unit == "rad/s") s << " (" << std::setprecision(5) << v * 60 / (2 * M_PI) << " rpm)";
+    if (unit == "W" && std::abs(v) >= 1000) s << " (" << std::setprecision(4) << v / 1000 << " kW)";
+    return s.str();
+}
+
+std::string hostName() {
+    char buf[256] = {0};
+    if (::gethostname(buf, sizeof buf - 1) != 0) return "unknown";
+    return buf;
+}
+
+int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
+    const ModelSpec spec = readModelFile(a.model, defaultModelReader(), a.overrides);
+    ensureDirectory(a.outDir);
+    const bool showProgress = !a.quiet && ::isatty(STDERR_FILENO);
+    auto lastReport = std::chrono::steady_clock::now();
+    ProgressFn progress;
+    if (showProgress)
+        progress = [&](double t, double end) {
+            const auto now = std::chrono::steady_clock::now();
+            if (now - lastReport < std::chrono::milliseconds(500)) return;
+            lastReport = now;
+            err << "\r  simulated " << std::setprecision(4) << t << " of " << end << " s   " << std::flush;
+        };
+    const auto start = std::chrono::steady_clock::now();
+    const AnalysisResult result = runAnalysis(spec, progress);
+    if (showProgress) err << "\r" << std::string(40, ' ') << "\r";
+    RunInfo info;
+    info.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    info.host = hostName();
+    info.version = kVersion;
+    for (const auto& r : result.results)
+        if (!std::isfinite(r.value))
+            throw AnalysisError("result " + r.name + " is not finite (the analysis diverged)");
+
+    const std::string csv = a.outDir + "/timeseries.csv";
+    writeFileAtomically(csv, formatTimeseriesCsv(result));
+    writeFileAtomically(a.outDir + "/summary.json", formatSummaryJson(spec, result, info));
+    std::string warning;
+    const auto plots = spec.outputs.plots ? writePlots(a.outDir, csv, result, warning) : std::vector<std::string>{};
+    if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
+
+    if (a.quiet) return 0;
+    out << spec.name << "\n  analysis: " << result.analysis << "\n";
+    for (const auto& r : result.results)
+        out << "  " << std::left << std::setw(24) << r.name << describeValue(r.value, r.unit) << "\n";
+    for (const auto& n : result.notes) out << "  note: " << n << "\n";
+    out << "  integrator " << result.statistics.integrator << ", accuracy " << result.statistics.accuracy
+        << ", " << result.statistics.steps << " steps, " << result.statistics.realizations
+        << " realizations, " << std::setprecision(3) << info.wallSeconds << " s wall\n";
+    out << "  wrote " << csv << ", " << a.outDir << "/summary.json";
+    for (const auto& p : plots) out << ", " << p;
+    out << "\n";
+    return 0;
+}
+
+int commandInfo(const Arguments& a, std::ostream& out) {
+    const ModelSpec spec = readModelFile(a.model, defaultModelReader(), a.overrides);
+    auto scene = buildScene(spec);
+    const SimTK::State state = scene->system().getDefaultState();
+    out << spec.name << " (" << spec.file << ")\n";
+    out << "  bodies: " << scene->bodies().size() << ", mobilities (DOF): " << state.getNU()
+        << ", constraints: " << scene->matter().getNumConstraints()
+        << ", forces: " << scene->forces().getNumForces() << "\n";
+    for (const auto& b : spec.bodies)
+        out << "  body " << b.name << ": pin on " << b.joint.parent << ", inertia " << b.inertia << " kg*m^2\n";
+    for (const auto& e : spec.elements) out << "  element " << e.name << ": " << e.type << "\n";
+    out << "  scenario: " << spec.scenario.type << ", integrator " << spec.integrator.name << " at accuracy "
+        << spec.integrator.accuracy << "\n  built:\n";
+    for (const auto& n : scene->notes()) out << "    " << n.what << " — " << n.why << "\n";
+    out << "  outputs:";
+    for (const auto& p : scene->probes()) out << " " << p.name << "[" << p.unit << "]";
+    out << "\n";
+    return 0;
+}
+
+int commandValidate(const Arguments& a, std::ostream& out) {
+    const auto rows = runValidationCases(a.filter);
+    if (a.json) {
+        out << formatValidationJson(rows);
+    } else {
+        out << formatValidationTable(rows);
+    }
+    for (const auto& r : rows)
+        if (r.status == "fail") return 1;
+    return 0;
+}
+
+}  // namespace
+
+int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    try {
+        if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
+            out << kUsage;
+            return 0;
+        }
+        if (!args.empty() && args[0] == "--version") {
+            out << "milldyn " << kVersion << "\n";
+            return 0;
+        }
+        const Arguments a = parseArguments(args);
+        if (a.command == "run") return commandRun(a, out, err);
+        if (a.command == "info") return commandInfo(a, out);
+        if (a.command == "validate") return commandValidate(a, out);
+        throw UsageError("unknown command '" + a.command + "'");
+    } catch (const UsageError& e) {
+        err << "milldyn: error: " << e.what() << "\n" << kUsage;
+        return 2;
+    } catch (const SpecError& e) {
+        err << e.formatted() << "\n";
+        return 2;
+    } catch (const AnalysisError& e) {
+        err << "milldyn: analysis failed: " << e.what() << "\n";
+        return 1;
+    } catch (const OutputError& e) {
+        err << "milldyn: output failed: " << e.what() << "\n";
+        return 1;
+    } catch (const std::exception& e) {
+        err << "milldyn: internal error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace milldyn

@@ -1,0 +1,450 @@
+#include "driver/ModelFile.h"
+
+#include "driver/Units.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace milldyn {
+
+const BodySpec* ModelSpec::findBody(const std::string& bodyName) const {
+    for (const auto& b : bodies)
+        if (b.name == bodyName) return &b;
+    return nullptr;
+}
+
+const ElementSpec* ModelSpec::findElement(const std::string& elementName) const {
+    for (const auto& e : elements)
+        if (e.name == elementName) return &e;
+    return nullptr;
+}
+
+const std::vector<std::string>& integratorNames() {
+    static const std::vector<std::string> names = {
+        "RungeKuttaMerson", "RungeKutta3",        "RungeKutta2",   "RungeKuttaFeldberg",
+        "CPodes",           "CPodesAdams",        "Verlet",        "SemiExplicitEuler",
+        "SemiExplicitEuler2", "ExplicitEuler"};
+    return names;
+}
+
+namespace {
+
+std::string joinWords(const std::vector<std::string>& words) {
+    std::string out;
+    for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
+    return out;
+}
+
+std::string didYouMean(const std::string& word, const std::vector<std::string>& candidates) {
+    const std::string near = nearestName(word, candidates);
+    return near.empty() ? std::string() : " (did you mean '" + near + "'?)";
+}
+
+std::string formatNumber(double v) {
+    std::ostringstream s;
+    s.precision(10);
+    s << v;
+    return s.str();
+}
+
+/// Reads one YAML document into a ModelSpec, remembering which nodes came
+/// from --set so their diagnostics point at the command line.
+class Reader {
+public:
+    Reader(std::string file, const ModelFileReader& lookups) : m_file(std::move(file)), m_lookups(lookups) {}
+
+    ModelSpec read(const std::string& text, const std::vector<Override>& overrides) {
+        YAML::Node root;
+        try {
+            root = YAML::Load(text);
+        } catch (const YAML::ParserException& e) {
+            throw SpecError({m_file, e.mark.line + 1, e.mark.column + 1}, "", "malformed YAML: " + e.msg);
+        }
+        if (!root || root.IsNull()) throw SpecError({m_file, 1, 1}, "", "the model file is empty");
+        requireMap(root, "<document>");
+        for (const auto& o : overrides) applyOverride(root, o);
+
+        ModelSpec spec;
+        spec.file = m_file;
+        checkKeys(root, "", {"format_version", "name", "description", "bodies", "elements",
+                             "scenario", "integrator", "outputs"});
+        const YAML::Node version = required(root, "format_version", "");
+        spec.formatVersion = static_cast<int>(readNumber(version, "format_version", "1"));
+        if (spec.formatVersion != kModelFormatVersion)
+            throw error(version, "format_version",
+                        "unsupported format version " + scalar(version, "format_version") +
+                            " (this milldyn reads version " + std::to_string(kModelFormatVersion) + ")");
+        spec.name = scalar(required(root, "name", ""), "name");
+        if (root["description"]) spec.description = scalar(root["description"], "description");
+
+        readBodies(required(root, "bodies", ""), spec);
+        if (root["elements"]) readElements(root["elements"], spec);
+        readScenario(required(root, "scenario", ""), spec);
+        if (root["integrator"]) readIntegrator(root["integrator"], spec.integrator);
+        if (root["outputs"]) readOutputs(root["outputs"], spec.outputs);
+        return spec;
+    }
+
+private:
+    std::string m_file;
+    const ModelFileReader& m_lookups;
+    std::vector<std::pair<YAML::Node, std::string>> m_overridden;  // node, "--set path"
+
+    SourceLocation where(const YAML::Node& n) const {
+        for (const auto& o : m_overridden)
+            if (o.first.is(n)) return {"<" + o.second + ">", 1, 1};
+        const YAML::Mark m = n.Mark();
+        if (m.line < 0) return {m_file, 1, 1};
+        return {m_file, m.line + 1, m.column + 1};
+    }
+
+    SpecError error(const YAML::Node& n, const std::string& key, const std::string& reason) const {
+        return SpecError(where(n), key, reason);
+    }
+
+    static std::string typeName(const YAML::Node& n) {
+        switch (n.Type()) {
+            case YAML::NodeType::Map: return "a mapping";
+            case YAML::NodeType::Sequence: return "a list";
+            case YAML::NodeType::Scalar: return "a scalar";
+            case YAML::NodeType::Null: return "nothing";
+            default: return "an undefined value";
+        }
+    }
+
+    void requireMap(const YAML::Node& n, const std::string& key) const {
+        if (!n.IsMap()) throw error(n, key, "expected a mapping (key: value lines), got " + typeName(n));
+    }
+
+    void requireList(const YAML::Node& n, const std::string& key) const {
+        if (!n.IsSequence()) throw error(n, key, "expected a list, got " + typeName(n));
+    }
+
+    std::string scalar(const YAML::Node& n, const std::string& key) const {
+        if (!n.IsScalar()) throw error(n, key, "expected a single value, got " + typeName(n));
+        return n.Scalar();
+    }
+
+    YAML::Node required(const YAML::Node& map, const std::string& key, const std::string& prefix) const {
+        const YAML::Node n = map[key];
+        if (!n) throw error(map, prefix + key, "missing required key '" + key + "'");
+        return n;
+    }
+
+    /// Unknown keys (with a suggestion) and duplicate keys.
+    void checkKeys(const YAML::Node& map, const std::string& prefix,
+                   const std::vector<std::string>& allowed) const {
+        std::set<std::string> seen;
+        for (auto it = map.begin(); it != map.end(); ++it) {
+            const std::string key = it->first.IsScalar() ? it->first.Scalar() : std::string("?");
+            if (!seen.insert(key).second) throw error(it->first, prefix + key, "duplicate key");
+            bool known = false;
+            for (const auto& a : allowed) known = known || a == key;
+            if (!known)
+                throw error(it->first, prefix + key,
+                            "unknown key '" + key + "'" + didYouMean(key, allowed));
+        }
+    }
+
+    double readNumber(const YAML::Node& n, const std::string& key, const std::string& unit) const {
+        const std::string text = scalar(n, key);
+        try {
+            const double v = units::toSI(text, unit);
+            if (!std::isfinite(v)) throw error(n, key, "value is not finite");
+            return v;
+        } catch (const units::UnitError& e) {
+            SourceLocation loc = where(n);
+            // Point at the offending character when the scalar is plain text.
+            if (n.Mark().line >= 0 && n.Tag() != "!") loc.column += static_cast<int>(e.column());
+            throw SpecError(loc, key, e.what());
+        }
+    }
+
+    bool readBool(const YAML::Node& n, const std::string& key) const {
+        const std::string text = scalar(n, key);
+        if (text == "true" || text == "yes" || text == "on") return true;
+        if (text == "false" || text == "no" || text == "off") return false;
+        throw error(n, key, "expected true or false, got '" + text + "'");
+    }
+
+    void checkRange(const YAML::Node& n, const std::string& key, const ParamSchema& p, double v) const {
+        const std::string unit = p.unit == "1" ? "" : " " + p.unit;
+        if (p.min) {
+            const bool ok = p.minExclusive ? v > *p.min : v >= *p.min;
+            if (!ok)
+                throw error(n, key, std::string("must be ") + (p.minExclusive ? "> " : ">= ") +
+                                        formatNumber(*p.min) + unit + ", got " + formatNumber(v) + unit);
+        }
+        if (p.max) {
+            const bool ok = p.maxExclusive ? v < *p.max : v <= *p.max;
+            if (!ok)
+                throw error(n, key, std::string("must be ") + (p.maxExclusive ? "< " : "<= ") +
+                                        formatNumber(*p.max) + unit + ", got " + formatNumber(v) + unit);
+        }
+    }
+
+    /// Reads the keys of an element or scenario against its schema.
+    void readParams(const YAML::Node& map, const ElementSchema& schema, const std::string& prefix,
+                    const std::vector<std::string>& reservedKeys, const ModelSpec& model,
+                    ElementSpec& out) const {
+        std::vector<std::string> allowed = reservedKeys;
+        for (const auto& p : schema.params) allowed.push_back(p.key);
+        checkKeys(map, prefix, allowed);
+
+        for (const auto& p : schema.params) {
+            const std::string key = prefix + p.key;
+            ParamValue v;
+            v.where = where(map);
+            const YAML::Node n = map[p.key];
+            if (!n) {
+                if (p.required) throw error(map, key, "missing required key '" + p.key + "'");
+                v.number = p.defaultValue.value_or(0.0);
+                v.text = p.defaultText;
+                out.params[p.key] = v;
+                continue;
+            }
+            v.given = true;
+            v.where = where(n);
+            switch (p.kind) {
+                case ParamKind::Quantity:
+                    v.number = readNumber(n, key, p.unit);
+                    checkRange(n, key, p, v.number);
+                    break;
+                case ParamKind::Choice: {
+                    v.text = scalar(n, key);
+                    bool ok = false;
+                    for (const auto& c : p.choices) ok = ok || c == v.text;
+                    if (!ok)
+                        throw error(n, key, "unknown value '" + v.text + "' (expected one of " +
+                                                joinWords(p.choices) + ")" +
+                                                didYouMean(v.text, p.choices));
+                    break;
+                }
+                case ParamKind::BodyRef:
+                    v.text = scalar(n, key);
+                    requireBody(n, key, v.text, model);
+                    break;
+                case ParamKind::BodyPair:
+                    requireList(n, key);
+                    if (n.size() != 2)
+                        throw error(n, key, "expected a list of two body names, got " +
+                                                std::to_string(n.size()) + " items");
+                    for (std::size_t i = 0; i < 2; ++i) {
+                        v.names.push_back(scalar(n[i], key));
+                        requireBody(n[i], key, v.names.back(), model);
+                    }
+                    break;
+                case ParamKind::Text:
+                    v.text = scalar(n, key);
+                    break;
+            }
+            out.params[p.key] = v;
+        }
+        if (schema.crossCheck) schema.crossCheck(out);
+    }
+
+    void requireBody(const YAML::Node& n, const std::string& key, const std::string& bodyName,
+                     const ModelSpec& model) const {
+        if (model.findBody(bodyName)) return;
+        std::vector<std::string> names;
+        for (const auto& b : model.bodies) names.push_back(b.name);
+        throw error(n, key, "no body named '" + bodyName + "'" + didYouMean(bodyName, names));
+    }
+
+    void readBodies(const YAML::Node& list, ModelSpec& spec) const {
+        requireList(list, "bodies");
+        if (list.size() == 0) throw error(list, "bodies", "a model needs at least one body");
+        for (const auto& n : list) {
+            requireMap(n, "bodies");
+            BodySpec b;
+            b.where = where(n);
+            checkKeys(n, "", {"name", "inertia", "mass", "joint", "initial_angle", "initial_speed"});
+            b.name = scalar(required(n, "name", ""), "name");
+            const std::string prefix = b.name + ".";
+            if (b.name == "ground") throw error(n["name"], "name", "'ground' is reserved for the fixed frame");
+            if (spec.findBody(b.name)) throw error(n["name"], "name", "a body named '" + b.name + "' exists already");
+            const YAML::Node inertia = required(n, "inertia", prefix);
+            b.inertia = readNumber(inertia, prefix + "inertia", "kg*m^2");
+            if (!(b.inertia > 0))
+                throw error(inertia, prefix + "inertia",
+                            "moment of inertia must be > 0 kg*m^2, got " + formatNumber(b.inertia));
+            if (n["mass"]) {
+                b.mass = readNumber(n["mass"], prefix + "mass", "kg");
+                if (b.mass < 0) throw error(n["mass"], prefix + "mass", "mass must be >= 0 kg, got " + formatNumber(b.mass));
+            }
+            if (n["initial_angle"]) b.initialAngle = readNumber(n["initial_angle"], prefix + "initial_angle", "rad");
+            if (n["initial_speed"]) b.initialSpeed = readNumber(n["initial_speed"], prefix + "initial_speed", "rad/s");
+            readJoint(required(n, "joint", prefix), prefix, spec, b.joint);
+            spec.bodies.push_back(b);
+        }
+    }
+
+    void readJoint(const YAML::Node& n, const std::string& prefix, const ModelSpec& spec, JointSpec& j) const {
+        requireMap(n, prefix + "joint");
+        j.where = where(n);
+        checkKeys(n, prefix + "joint.", {"type", "parent", "location"});
+        const YAML::Node type = required(n, "type", prefix + "joint.");
+        j.type = scalar(type, prefix + "joint.type");
+        if (j.type != "pin")
+            throw error(type, prefix + "joint.type",
+                        "unknown joint type '" + j.type + "' (expected pin)" + didYouMean(j.type, {"pin"}));
+        if (n["parent"]) {
+            j.parent = scalar(n["parent"], prefix + "joint.parent");
+            if (j.parent != "ground" && !spec.findBody(j.parent))
+                throw error(n["parent"], prefix + "joint.parent",
+                            "no body named '" + j.parent + "' defined above this one (parents come first)");
+        }
+        if (n["location"]) {
+            const YAML::Node loc = n["location"];
+            requireList(loc, prefix + "joint.location");
+            if (loc.size() != 3) throw error(loc, prefix + "joint.location", "expected [x, y, z] lengths");
+            for (std::size_t i = 0; i < 3; ++i) j.location[i] = readNumber(loc[i], prefix + "joint.location", "m");
+        }
+    }
+
+    void readElements(const YAML::Node& list, ModelSpec& spec) const {
+        requireList(list, "elements");
+        for (const auto& n : list) {
+            requireMap(n, "elements");
+            ElementSpec e;
+            e.where = where(n);
+            const YAML::Node type = required(n, "type", "elements.");
+            e.type = scalar(type, "type");
+            const YAML::Node nameNode = required(n, "name", e.type + ".");
+            e.name = scalar(nameNode, "name");
+            if (spec.findElement(e.name))
+                throw error(nameNode, "name", "an element named '" + e.name + "' exists already");
+            const ElementSchema* schema = m_lookups.elementSchema(e.type);
+            if (!schema)
+                throw error(type, e.name + ".type",
+                            "unknown element type '" + e.type + "'" + didYouMean(e.type, m_lookups.elementTypes));
+            readParams(n, *schema, e.name + ".", {"type", "name"}, spec, e);
+            spec.elements.push_back(e);
+        }
+    }
+
+    void readScenario(const YAML::Node& n, ModelSpec& spec) const {
+        requireMap(n, "scenario");
+        ElementSpec& s = spec.scenario;
+        s.name = "scenario";
+        s.where = where(n);
+        const YAML::Node kind = required(n, "analysis", "scenario.");
+        s.type = scalar(kind, "scenario.analysis");
+        const ElementSchema* schema = m_lookups.analysisSchema(s.type);
+        if (!schema)
+            throw error(kind, "scenario.analysis",
+                        "unknown analysis '" + s.type + "'" + didYouMean(s.type, m_lookups.analysisKinds));
+        readParams(n, *schema, "scenario.", {"analysis"}, spec, s);
+    }
+
+    void readIntegrator(const YAML::Node& n, IntegratorSpec& integ) const {
+        requireMap(n, "integrator");
+        integ.where = where(n);
+        checkKeys(n, "integrator.", {"name", "accuracy", "max_step"});
+        if (n["name"]) {
+            integ.name = scalar(n["name"], "integrator.name");
+            const auto& names = integratorNames();
+            if (std::find(names.begin(), names.end(), integ.name) == names.end())
+                throw error(n["name"], "integrator.name",
+                            "unknown integrator '" + integ.name + "'" + didYouMean(integ.name, names));
+        }
+        if (n["accuracy"]) {
+            integ.accuracy = readNumber(n["accuracy"], "integrator.accuracy", "1");
+            if (!(integ.accuracy > 0 && integ.accuracy <= 1))
+                throw error(n["accuracy"], "integrator.accuracy",
+                            "must lie in (0, 1], got " + formatNumber(integ.accuracy));
+        }
+        if (n["max_step"]) {
+            integ.maxStep = readNumber(n["max_step"], "integrator.max_step", "s");
+            if (integ.maxStep < 0) throw error(n["max_step"], "integrator.max_step", "must be >= 0 s");
+        }
+    }
+
+    void readOutputs(const YAML::Node& n, OutputSpec& out) const {
+        requireMap(n, "outputs");
+        out.where = where(n);
+        checkKeys(n, "outputs.", {"sample_interval", "plots"});
+        if (n["sample_interval"]) {
+            out.sampleInterval = readNumber(n["sample_interval"], "outputs.sample_interval", "s");
+            if (!(out.sampleInterval > 0))
+                throw error(n["sample_interval"], "outputs.sample_interval", "must be > 0 s");
+        }
+        if (n["plots"]) out.plots = readBool(n["plots"], "outputs.plots");
+    }
+
+    /// Walks `a.b.c`, descending into lists by item name or index, and
+    /// replaces (or adds) the last key's value.
+    void applyOverride(YAML::Node root, const Override& o) {
+        const std::string label = "--set " + o.path;
+        std::vector<std::string> parts;
+        std::stringstream ss(o.path);
+        for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
+        YAML::Node node;
+        node.reset(root);
+        for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+            const std::string& part = parts[i];
+            if (node.IsSequence()) {
+                YAML::Node found;
+                for (std::size_t k = 0; k < node.size() && !found; ++k)
+                    if (node[k].IsMap() && node[k]["name"] && node[k]["name"].Scalar() == part) found = node[k];
+                if (!found && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos) {
+                    const std::size_t index = std::stoul(part);
+                    if (index < node.size()) found = node[index];
+                }
+                if (!found)
+                    throw SpecError({"<" + label + ">", 1, 1}, o.path,
+                                    "no list item named '" + part + "' at this point of the path");
+                node.reset(found);  // operator= would copy found into the tree
+            } else if (node.IsMap()) {
+                if (!node[part])
+                    throw SpecError({"<" + label + ">", 1, 1}, o.path,
+                                    "no key '" + part + "' at this point of the path");
+                const YAML::Node child = node[part];
+                node.reset(child);
+            } else {
+                throw SpecError({"<" + label + ">", 1, 1}, o.path,
+                                "'" + part + "' is a single value, the path goes no deeper");
+            }
+        }
+        if (!node.IsMap())
+            throw SpecError({"<" + label + ">", 1, 1}, o.path, "the path must end at a key of a mapping");
+        const std::string& last = parts.back();
+        if (node[last] && !node[last].IsScalar() && !node[last].IsNull())
+            throw SpecError({"<" + label + ">", 1, 1}, o.path, "--set replaces single values only");
+        node[last] = o.value;
+        m_overridden.emplace_back(node[last], label);
+    }
+};
+
+}  // namespace
+
+Override parseOverride(const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw SpecError({"<--set>", 1, 1}, text, "expected --set path=value");
+    Override o{text.substr(0, eq), text.substr(eq + 1)};
+    if (o.path.front() == '.' || o.path.back() == '.' || o.path.find("..") != std::string::npos)
+        throw SpecError({"<--set>", 1, 1}, o.path, "malformed path");
+    return o;
+}
+
+ModelSpec readModelText(const std::string& text, const std::string& displayName,
+                        const ModelFileReader& reader, const std::vector<Override>& overrides) {
+    return Reader(displayName, reader).read(text, overrides);
+}
+
+ModelSpec readModelFile(const std::string& path, const ModelFileReader& reader,
+                        const std::vector<Override>& overrides) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SpecError({path, 0, 0}, "", "cannot open the model file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw SpecError({path, 0, 0}, "", "cannot read the model file");
+    return readModelText(text.str(), path, reader, overrides);
+}
+
+}  // namespace milldyn

@@ -1,0 +1,42 @@
+#pragma once
+// ModelFile: reads a YAML model file into a checked ModelSpec. Every
+// problem is a SpecError with file, line, column and key; nothing
+// downstream has to re-check types, units or ranges.
+
+#include "driver/ModelSpec.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace milldyn {
+
+/// Finds the schema of an element type or analysis kind; nullptr if unknown.
+using SchemaLookup = std::function<const ElementSchema*(const std::string&)>;
+
+struct ModelFileReader {
+    SchemaLookup elementSchema;
+    std::vector<std::string> elementTypes;   ///< for "did you mean"
+    SchemaLookup analysisSchema;
+    std::vector<std::string> analysisKinds;  ///< for "did you mean"
+};
+
+/// One `--set path=value` override. Paths address mapping keys by name and
+/// sequence items by their `name:` (elements.belt.stiffness) or index.
+struct Override {
+    std::string path;
+    std::string value;
+};
+
+/// Parses "path=value"; throws SpecError located at the command line.
+Override parseOverride(const std::string& text);
+
+/// Reads and checks a model file. Throws SpecError on any bad input.
+ModelSpec readModelFile(const std::string& path, const ModelFileReader& reader,
+                        const std::vector<Override>& overrides = {});
+
+/// The same from text in memory (`displayName` appears in diagnostics).
+ModelSpec readModelText(const std::string& text, const std::string& displayName,
+                        const ModelFileReader& reader, const std::vector<Override>& overrides = {});
+
+}  // namespace milldyn

@@ -1,0 +1,70 @@
+#pragma once
+// ModelSpec: a model file after reading and checking. Plain structs in SI
+// units; knows nothing of Simbody (the SceneBuilder turns it into a Scene)
+// and nothing of YAML (ModelFile reads it).
+
+#include "plugins/ElementSchema.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace milldyn {
+
+constexpr int kModelFormatVersion = 1;
+
+/// How a body is attached to its parent. Only a pin (rotation about the
+/// parent's z axis) exists so far.
+struct JointSpec {
+    std::string type = "pin";
+    std::string parent = "ground";
+    /// Joint origin in the parent frame [m].
+    std::array<double, 3> location{{0, 0, 0}};
+    SourceLocation where;
+};
+
+struct BodySpec {
+    std::string name;
+    /// Polar moment of inertia about the joint axis [kg*m^2], > 0.
+    double inertia = 0;
+    /// Mass [kg], >= 0 (a shaft on a pin needs none).
+    double mass = 0;
+    JointSpec joint;
+    double initialAngle = 0;  ///< [rad]
+    double initialSpeed = 0;  ///< [rad/s]
+    SourceLocation where;
+};
+
+struct IntegratorSpec {
+    std::string name = "CPodes";
+    double accuracy = 1e-6;  ///< relative accuracy [-]
+    double maxStep = 0;      ///< [s]; 0: integrator's choice
+    SourceLocation where;
+};
+
+struct OutputSpec {
+    double sampleInterval = 1e-3;  ///< [s] between CSV rows
+    bool plots = true;
+    SourceLocation where;
+};
+
+struct ModelSpec {
+    std::string file;  ///< path as given
+    int formatVersion = kModelFormatVersion;
+    std::string name;
+    std::string description;
+    std::vector<BodySpec> bodies;
+    std::vector<ElementSpec> elements;
+    /// The analysis: `type` is its kind ("transient", ...), params its keys.
+    ElementSpec scenario;
+    IntegratorSpec integrator;
+    OutputSpec outputs;
+
+    const BodySpec* findBody(const std::string& name) const;
+    const ElementSpec* findElement(const std::string& name) const;
+};
+
+/// The integrators Simbody 3.7 has, by the names model files use.
+const std::vector<std::string>& integratorNames();
+
+}  // namespace milldyn

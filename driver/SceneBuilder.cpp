@@ -1,0 +1,61 @@
+#include "driver/SceneBuilder.h"
+
+#include "plugins/ElementRegistry.h"
+
+#include <stdexcept>
+
+namespace milldyn {
+namespace {
+constexpr double kPlaceholderMass = 1.0;  // [kg]
+}  // namespace
+
+std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
+    auto scene = std::make_unique<Scene>();
+    for (const auto& b : spec.bodies) {
+        // MobilizedBody handles have reference semantics: a copy is the body.
+        SimTK::MobilizedBody parent = b.joint.parent == "ground"
+                                          ? SimTK::MobilizedBody(scene->matter().updGround())
+                                          : scene->findBody(b.joint.parent)->mobod;
+        // A shaft with polar moment J about z: Inertia(J/2, J/2, J) keeps the
+        // triangle inequality (a thin disc); Inertia(0, 0, J) would throw.
+        const SimTK::Inertia inertia(b.inertia / 2, b.inertia / 2, b.inertia);
+        // Simbody refuses a massless body with inertia. A body whose mass
+        // centre is on its pin axis turns the same whatever its mass, so an
+        // omitted mass becomes a stated placeholder.
+        const double mass = b.mass > 0 ? b.mass : kPlaceholderMass;
+        const SimTK::Body::Rigid body(SimTK::MassProperties(mass, SimTK::Vec3(0), inertia));
+        const SimTK::Vec3 location(b.joint.location[0], b.joint.location[1], b.joint.location[2]);
+        SimTK::MobilizedBody::Pin pin(parent,
+                                      SimTK::Transform(location), body, SimTK::Transform());
+        scene->addBody(b.name, pin);
+        scene->note("body " + b.name + " (pin on " + b.joint.parent + ")",
+                    b.mass > 0 ? "declared in the model file"
+                               : "declared in the model file; no mass given, 1 kg placeholder on the axis "
+                                 "(no effect on rotation)");
+    }
+    const ElementRegistry& registry = ElementRegistry::instance();
+    for (const auto& e : spec.elements) {
+        const ElementType* type = registry.find(e.type);
+        if (!type) throw SpecError(e.where, e.name + ".type", "unknown element type '" + e.type + "'");
+        try {
+            type->build(e, *scene);
+        } catch (const std::invalid_argument& err) {
+            throw SpecError(e.where, e.name, err.what());
+        }
+    }
+    scene->system().realizeTopology();
+    return scene;
+}
+
+SimTK::State initialState(const Scene& scene, const ModelSpec& spec) {
+    SimTK::State state = scene.system().getDefaultState();
+    for (const auto& b : spec.bodies) {
+        const SceneBody* body = scene.findBody(b.name);
+        body->mobod.setOneQ(state, SimTK::MobilizerQIndex(0), b.initialAngle);
+        body->mobod.setOneU(state, SimTK::MobilizerUIndex(0), b.initialSpeed);
+    }
+    scene.system().realize(state, SimTK::Stage::Position);
+    return state;
+}
+
+}  // namespace milldyn

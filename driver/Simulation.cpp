@@ -1,0 +1,285 @@
+#include "driver/Simulation.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace milldyn {
+namespace {
+
+std::string timeText(double t) {
+    std::ostringstream s;
+    s.precision(9);
+    s << "t = " << t << " s";
+    return s.str();
+}
+
+// Multistep methods (CPodes) otherwise stop with "mxstep steps taken" on
+// long stiff runs; the run's own end time bounds the work instead.
+constexpr int kInternalStepLimit = 10'000'000;
+// Fixed-step integrators need a step; used when max_step is not given [s].
+constexpr double kDefaultFixedStep = 1e-4;
+
+}  // namespace
+
+std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::System& system, const std::string& name) {
+    using namespace SimTK;
+    if (name == "RungeKuttaMerson") return std::make_unique<RungeKuttaMersonIntegrator>(system);
+    if (name == "RungeKutta3") return std::make_unique<RungeKutta3Integrator>(system);
+    if (name == "RungeKutta2") return std::make_unique<RungeKutta2Integrator>(system);
+    if (name == "RungeKuttaFeldberg") return std::make_unique<RungeKuttaFeldbergIntegrator>(system);
+    if (name == "CPodes") return std::make_unique<CPodesIntegrator>(system, CPodes::BDF, CPodes::Newton);
+    if (name == "CPodesAdams")
+        return std::make_unique<CPodesIntegrator>(system, CPodes::Adams, CPodes::Functional);
+    if (name == "Verlet") return std::make_unique<VerletIntegrator>(system);
+    if (name == "SemiExplicitEuler") return std::make_unique<SemiExplicitEulerIntegrator>(system, kDefaultFixedStep);
+    if (name == "SemiExplicitEuler2") return std::make_unique<SemiExplicitEuler2Integrator>(system);
+    if (name == "ExplicitEuler") return std::make_unique<ExplicitEulerIntegrator>(system);
+    throw std::invalid_argument("unknown integrator '" + name + "'");
+}
+
+Simulation::Simulation(const Scene& scene, const IntegratorSpec& settings)
+    : m_scene(scene), m_settings(settings) {
+    m_extra.integrator = settings.name;
+    m_extra.accuracy = settings.accuracy;
+}
+
+void Simulation::initialize(const SimTK::State& start) {
+    SimTK::State state = start;
+    // Switchings due at the start time take effect before the first step.
+    for (const auto& e : m_scene.switchEvents())
+        if (e.time <= state.getTime()) e.apply(state);
+    m_integrator = makeIntegrator(m_scene.system(), m_settings.name);
+    m_integrator->setAccuracy(m_settings.accuracy);
+    m_integrator->setInternalStepLimit(kInternalStepLimit);
+    if (m_settings.maxStep > 0) {
+        m_integrator->setMaximumStepSize(m_settings.maxStep);
+        if (m_settings.name == "SemiExplicitEuler") m_integrator->setFixedStepSize(m_settings.maxStep);
+    }
+    m_integrator->setReturnEveryInternalStep(true);
+    m_integrator->initialize(state);
+    m_integrator->resetAllStatistics();
+}
+
+const SimTK::State& Simulation::state() const { return m_integrator->getState(); }
+
+void Simulation::accumulateStatistics() {
+    m_extra.steps += m_integrator->getNumStepsTaken();
+    m_extra.realizations += m_integrator->getNumRealizations();
+    m_extra.stepAttempts += m_integrator->getNumStepsAttempted();
+}
+
+RunStatistics Simulation::statistics() const {
+    RunStatistics s = m_extra;
+    s.steps += m_integrator->getNumStepsTaken();
+    s.realizations += m_integrator->getNumRealizations();
+    s.stepAttempts += m_integrator->getNumStepsAttempted();
+    return s;
+}
+
+void Simulation::checkFinite(const SimTK::State& state) const {
+    const double t = state.getTime();
+    for (const auto& b : m_scene.bodies()) {
+        const double q = pinAngle(state, b.mobod), u = pinSpeed(state, b.mobod);
+        if (!std::isfinite(q) || !std::isfinite(u))
+            throw AnalysisError("the motion of body " + b.name + " is not finite at " + timeText(t) +
+                                " (the analysis diverged)");
+    }
+    for (const auto& p : m_scene.probes()) {
+        const double v = p.value(state);
+        if (!std::isfinite(v)) {
+            const std::string element = p.name.substr(0, p.name.find('.'));
+            throw AnalysisError("element " + element + ": " + p.name + " is not finite at " + timeText(t));
+        }
+    }
+}
+
+std::optional<double> Simulation::run(double endTime, double sampleInterval, const SampleFn& onSample,
+                                      const Watch* watch) {
+    SimTK::Integrator& integ = *m_integrator;
+    const SimTK::System& system = m_scene.system();
+    const double t0 = integ.getTime();
+
+    auto emit = [&](const SimTK::State& s) {
+        system.realize(s, SimTK::Stage::Acceleration);
+        checkFinite(s);
+        if (onSample) onSample(s);
+    };
+    emit(integ.getState());
+    if (endTime <= t0) return std::nullopt;
+
+    std::vector<double> switchTimes;
+    for (const auto& e : m_scene.switchEvents())
+        if (e.time > t0 && e.time < endTime) switchTimes.push_back(e.time);
+    std::sort(switchTimes.begin(), switchTimes.end());
+    std::size_t nextSwitch = 0;
+
+    long sampleIndex = 1;
+    SimTK::State lastStepEnd = integ.getState();
+    double lastWatch = watch ? watch->value(lastStepEnd) : 0;
+
+    while (true) {
+        const double nextSample = std::min(t0 + sampleIndex * sampleInterval, endTime);
+        const double hardStop = nextSwitch < switchTimes.size() ? switchTimes[nextSwitch] : endTime;
+        SimTK::Integrator::SuccessfulStepStatus status;
+        try {
+            status = integ.stepTo(std::min(nextSample, hardStop), hardStop);
+        } catch (const std::exception& e) {
+            throw AnalysisError("integrator " + m_settings.name + " failed near " + timeText(integ.getTime()) +
+                                ": " + std::string(e.what()).substr(0, 300));
+        }
+        const SimTK::State& s = integ.getState();
+        system.realize(s, SimTK::Stage::Velocity);
+
+        if (watch && s.getTime() >= watch->notBefore) {
+            const double value = watch->value(s);
+            if (lastWatch > 0 && value <= 0) {
+                const double tCross = locateCrossing(lastStepEnd, s.getTime(), *watch);
+                auto again = makeIntegrator(system, m_settings.name);
+                again->setAccuracy(m_settings.accuracy);
+                again->setInternalStepLimit(kInternalStepLimit);
+                again->initialize(lastStepEnd);
+                again->stepTo(tCross, tCross);
+                m_extra.realizations += again->getNumRealizations();
+                emit(again->getState());
+                return tCross;
+            }
+            if (!integ.isStateInterpolated()) lastWatch = value;
+        }
+        if (!integ.isStateInterpolated()) lastStepEnd = s;
+
+        const double t = s.getTime();
+        const bool atSample = std::abs(t - nextSample) <= 1e-12 * std::max(1.0, std::abs(t));
+        // A switching instant is always a sample: the state just before it
+        // is what a summary of steady running reports.
+        const bool atSwitch = nextSwitch < switchTimes.size() && t >= switchTimes[nextSwitch];
+        if (atSample || atSwitch || status == SimTK::Integrator::ReachedReportTime) emit(s);
+        if (atSample) ++sampleIndex;
+        if (t >= endTime) return std::nullopt;
+        // CPodes may step past the stop and interpolate back, so the switch
+        // is applied to the state at the switch time and the integrator
+        // restarts from it, whatever the integrator reported.
+        if (atSwitch) {
+            SimTK::State restart = s;
+            for (const auto& e : m_scene.switchEvents())
+                if (e.time == switchTimes[nextSwitch]) e.apply(restart);
+            ++nextSwitch;
+            accumulateStatistics();
+            integ.initialize(restart);
+            integ.resetAllStatistics();
+            lastStepEnd = integ.getState();
+            if (watch) lastWatch = watch->value(lastStepEnd);
+        }
+        if (status == SimTK::Integrator::EndOfSimulation) return std::nullopt;
+    }
+}
+
+double Simulation::locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch) {
+    const SimTK::System& system = m_scene.system();
+    auto valueAt = [&](double t) {
+        auto integ = makeIntegrator(system, m_settings.name);
+        integ->setAccuracy(m_settings.accuracy);
+        integ->setInternalStepLimit(kInternalStepLimit);
+        integ->initialize(before);
+        if (t > before.getTime()) integ->stepTo(t, t);
+        m_extra.realizations += integ->getNumRealizations();
+        const SimTK::State& s = integ->getState();
+        system.realize(s, SimTK::Stage::Velocity);
+        return watch.value(s);
+    };
+    // Illinois (modified regula falsi): bracketed, superlinear on smooth f.
+    double a = before.getTime(), fa = watch.value(before);
+    double b = tAfter, fb = valueAt(b);
+    int side = 0;
+    for (int i = 0; i < 100; ++i) {
+        if (b - a <= 1e-13 * std::max(1.0, std::abs(b))) break;
+        double c = (a * fb - b * fa) / (fb - fa);
+        if (!(c > a && c < b)) c = 0.5 * (a + b);
+        const double fc = valueAt(c);
+        if (fc > 0) {
+            a = c;
+            fa = fc;
+            if (side == -1) fb *= 0.5;
+            side = -1;
+        } else {
+            b = c;
+            fb = fc;
+            if (side == +1) fa *= 0.5;
+            side = +1;
+            if (fc == 0) break;
+        }
+    }
+    return b;
+}
+
+SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
+    const SimTK::System& system = scene.system();
+    SimTK::State state = guess;
+    const int nq = state.getNQ(), nu = state.getNU();
+    const auto hints = scene.speedHints();
+    for (const auto& b : scene.bodies()) b.mobod.setOneU(state, SimTK::MobilizerUIndex(0), hints.at(b.name));
+    const double heldAngle = nq > 0 ? state.getQ()[0] : 0;
+    const auto& residuals = scene.steadyResiduals();
+    const int nr = nu + static_cast<int>(residuals.size()) + (nq > 0 ? 1 : 0);
+    const int nx = nq + nu;
+
+    auto setX = [&](SimTK::State& s, const Eigen::VectorXd& x) {
+        for (int i = 0; i < nq; ++i) s.updQ()[i] = x[i];
+        for (int i = 0; i < nu; ++i) s.updU()[i] = x[nq + i];
+    };
+    auto residual = [&](const Eigen::VectorXd& x) {
+        SimTK::State s = state;
+        setX(s, x);
+        system.realize(s, SimTK::Stage::Acceleration);
+        Eigen::VectorXd r(nr);
+        for (int i = 0; i < nu; ++i) r[i] = s.getUDot()[i];
+        for (std::size_t k = 0; k < residuals.size(); ++k) r[nu + k] = residuals[k].value(s);
+        if (nq > 0) r[nr - 1] = s.getQ()[0] - heldAngle;
+        return r;
+    };
+    Eigen::VectorXd x(nx);
+    for (int i = 0; i < nq; ++i) x[i] = state.getQ()[i];
+    for (int i = 0; i < nu; ++i) x[nq + i] = state.getU()[i];
+
+    Eigen::VectorXd r = residual(x);
+    for (int iter = 0; iter < 60; ++iter) {
+        Eigen::MatrixXd J(nr, nx);
+        for (int j = 0; j < nx; ++j) {
+            const double h = 1e-6 * std::max(1.0, std::abs(x[j]));
+            Eigen::VectorXd xp = x, xm = x;
+            xp[j] += h;
+            xm[j] -= h;
+            J.col(j) = (residual(xp) - residual(xm)) / (2 * h);
+        }
+        Eigen::VectorXd dx = J.colPivHouseholderQr().solve(-r);
+        // Large speed jumps can leave a motor's stable branch: damp them.
+        double scale = 1;
+        for (int i = 0; i < nu; ++i) {
+            const double limit = 0.25 * std::max(1.0, std::abs(x[nq + i]));
+            if (std::abs(dx[nq + i]) > limit) scale = std::min(scale, limit / std::abs(dx[nq + i]));
+        }
+        x += scale * dx;
+        r = residual(x);
+        if (scale == 1 && dx.norm() <= 1e-13 * (1 + x.norm())) break;
+    }
+    setX(state, x);
+    system.realize(state, SimTK::Stage::Acceleration);
+    // Converged means the accelerations are negligible against what the
+    // forces alone would produce over one second of running.
+    const double speedScale = std::max(1.0, x.tail(nu).cwiseAbs().maxCoeff());
+    if (!r.allFinite() || r.cwiseAbs().maxCoeff() > 1e-8 * speedScale) {
+        Eigen::Index worst = 0;
+        r.cwiseAbs().maxCoeff(&worst);
+        std::string where = worst < nu ? "acceleration of body " + scene.bodies()[worst].name
+                            : worst < nu + static_cast<Eigen::Index>(residuals.size())
+                                ? residuals[worst - nu].name
+                                : "held angle";
+        throw AnalysisError("no steady running state found: residual " + std::to_string(r.cwiseAbs().maxCoeff()) +
+                            " in " + where + " (does the drive overcome the load?)");
+    }
+    return state;
+}
+
+}  // namespace milldyn

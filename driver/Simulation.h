@@ -1,0 +1,85 @@
+#pragma once
+// Simulation: time integration of a Scene with Simbody's integrators.
+// Samples are interpolated (they never force a step boundary, which would
+// cap the step at the sample interval); the integrator stops exactly only
+// at scheduled switch events and at the end. A watched function's first
+// zero crossing (a shaft coming to rest) is located by re-integrating from
+// the last accepted step, so its time is as accurate as the integration.
+
+#include "driver/ModelSpec.h"
+#include "plugins/Scene.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace milldyn {
+
+/// An analysis that failed (diverged, integrator gave up): names the
+/// element or quantity and the simulated time. The driver exits 1.
+class AnalysisError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Creates a Simbody integrator by its model-file name (integratorNames()).
+std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::System& system, const std::string& name);
+
+struct RunStatistics {
+    std::string integrator;
+    double accuracy = 0;
+    long steps = 0;
+    long realizations = 0;
+    long stepAttempts = 0;
+};
+
+class Simulation {
+public:
+    Simulation(const Scene& scene, const IntegratorSpec& settings);
+
+    /// Starts from `state` (its time is the start time).
+    void initialize(const SimTK::State& state);
+
+    using SampleFn = std::function<void(const SimTK::State&)>;
+
+    /// A function of the state whose first crossing from > 0 to <= 0 after
+    /// `notBefore` [s] ends the run (realized to Stage::Velocity).
+    struct Watch {
+        std::function<double(const SimTK::State&)> value;
+        double notBefore = 0;
+        std::string what;
+    };
+
+    /// Advances to `endTime`, calling onSample at every multiple of
+    /// `sampleInterval` (and at the start and the end) with a state
+    /// realized to Acceleration. Applies the scene's switch events. With a
+    /// watch, stops at its first crossing and returns its time (the last
+    /// sample is then the crossing state); otherwise returns nullopt.
+    /// Throws AnalysisError if the integrator fails or a sample is not finite.
+    std::optional<double> run(double endTime, double sampleInterval, const SampleFn& onSample,
+                              const Watch* watch = nullptr);
+
+    const SimTK::State& state() const;
+    RunStatistics statistics() const;
+
+private:
+    const Scene& m_scene;
+    IntegratorSpec m_settings;
+    std::unique_ptr<SimTK::Integrator> m_integrator;
+    RunStatistics m_extra;  // work done by crossing searches
+
+    void checkFinite(const SimTK::State& state) const;
+    void accumulateStatistics();
+    double locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch);
+};
+
+/// Solves for steady running: all accelerations zero and every steady
+/// residual of the scene (coupling twist rates) zero, the first body's angle
+/// held. Starts from the scene's speed hints. Returns a state realized to
+/// Acceleration. Throws AnalysisError naming the largest residual if it does
+/// not converge.
+SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess);
+
+}  // namespace milldyn

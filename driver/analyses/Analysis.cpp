@@ -1,0 +1,158 @@
+#include "driver/analyses/Analysis.h"
+
+#include "driver/ModelFile.h"
+#include "plugins/ElementRegistry.h"
+
+#include <limits>
+#include <map>
+
+namespace milldyn {
+
+const ResultScalar* AnalysisResult::find(const std::string& name) const {
+    for (const auto& r : results)
+        if (r.name == name) return &r;
+    return nullptr;
+}
+
+namespace {
+
+std::map<std::string, ElementSchema> makeAnalysisSchemas() {
+    using P = ParamSchema;
+    std::map<std::string, ElementSchema> schemas;
+
+    ElementSchema transient;
+    transient.type = "transient";
+    transient.doc = "Time simulation: start, steady running, switch-off and run-out.";
+    transient.params = {
+        P::quantity("end_time", "s", "simulated time").above(0).atMost(1e6),
+        P::choice("initial_state", {"rest", "steady", "file"},
+                  "rest: all speeds 0; steady: solved steady running; file: the bodies' initial_* keys")
+            .optional("rest"),
+        P::body("speed_body", "body whose speed the summary reports (default: the first)").optional(""),
+        P::body("runout_body", "body whose first stop after switch-off ends the run-out").optional(""),
+    };
+    schemas["transient"] = transient;
+
+    ElementSchema identify;
+    identify.type = "coastdown_identify";
+    identify.doc = "Finds the constant resistance torque that makes the simulated run-out after "
+                   "switch-off last a measured time (root-finding on simulations).";
+    identify.params = {
+        P::quantity("runout_time", "s", "measured run-out time t_v").above(0).atMost(1e4),
+        P::text("resistance", "name of the ResistanceTorque element whose constant_torque is identified"),
+        P::body("runout_body", "body whose run-out is measured (the millstone)"),
+        P::choice("runout_measure", {"body_stop", "mean_speed"},
+                  "body_stop: first stop of runout_body; mean_speed: zero of the momentum-weighted "
+                  "mean speed (the paper's mean line, eq 12)")
+            .optional("body_stop"),
+        P::quantity("idle_runout_time", "s", "run-out time without feed, for M_zh (0: none)")
+            .optional(0.0).atLeast(0),
+        P::quantity("belt_ratio", "1", "u_p: M_zh = (Mc − Mc,idle)·u_p").optional(1.0).above(0),
+        P::body("speed_body", "body whose steady speed is reported (default: the first)").optional(""),
+        P::quantity("tolerance", "1", "relative tolerance on the identified torque")
+            .optional(1e-10).above(0).atMost(1e-2),
+    };
+    schemas["coastdown_identify"] = identify;
+    return schemas;
+}
+
+const std::map<std::string, ElementSchema>& analysisSchemas() {
+    static const std::map<std::string, ElementSchema> schemas = makeAnalysisSchemas();
+    return schemas;
+}
+
+}  // namespace
+
+const ElementSchema* findAnalysisSchema(const std::string& kind) {
+    const auto& all = analysisSchemas();
+    auto it = all.find(kind);
+    return it == all.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> analysisKinds() {
+    std::vector<std::string> kinds;
+    for (const auto& kv : analysisSchemas()) kinds.push_back(kv.first);
+    return kinds;
+}
+
+ModelFileReader defaultModelReader() {
+    ModelFileReader r;
+    const ElementRegistry& registry = ElementRegistry::instance();
+    r.elementSchema = [&registry](const std::string& type) -> const ElementSchema* {
+        const ElementType* t = registry.find(type);
+        return t ? &t->schema : nullptr;
+    };
+    r.elementTypes = registry.typeNames();
+    r.analysisSchema = findAnalysisSchema;
+    r.analysisKinds = analysisKinds();
+    return r;
+}
+
+AnalysisResult runModelFile(const std::string& path, const std::vector<Override>& overrides, ModelSpec* specOut) {
+    const ModelSpec spec = readModelFile(path, defaultModelReader(), overrides);
+    if (specOut) *specOut = spec;
+    return runAnalysis(spec);
+}
+
+AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
+    if (spec.scenario.type == "transient") return runTransient(spec, progress);
+    if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
+    throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");
+}
+
+double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role) {
+    double sum = 0;
+    for (const auto& p : scene.probes())
+        if (p.role == role) sum += p.value(state);
+    return sum;
+}
+
+const SceneBody& scenarioBody(const Scene& scene, const ElementSpec& scenario, const std::string& key) {
+    const std::string& name = scenario.text(key);
+    return name.empty() ? scene.bodies().front() : *scene.findBody(name);
+}
+
+void addDefaultPlots(AnalysisResult& result) {
+    std::vector<std::size_t> speeds, torques;
+    for (std::size_t i = 1; i < result.columnNames.size(); ++i) {
+        if (result.columnUnits[i] == "rad/s") speeds.push_back(i);
+        if (result.columnUnits[i] == "N*m") torques.push_back(i);
+    }
+    result.plots.push_back({"speeds", speeds});
+    result.plots.push_back({"torques", torques});
+}
+
+SampleTable::SampleTable(const Scene& scene, AnalysisResult& result) : m_scene(scene), m_result(result) {
+    result.columnNames = {"time"};
+    result.columnUnits = {"s"};
+    for (const auto& b : scene.bodies()) {
+        result.columnNames.push_back(b.name + ".angle");
+        result.columnUnits.push_back("rad");
+        result.columnNames.push_back(b.name + ".speed");
+        result.columnUnits.push_back("rad/s");
+    }
+    for (const auto& p : scene.probes()) {
+        result.columnNames.push_back(p.name);
+        result.columnUnits.push_back(p.unit);
+    }
+}
+
+void SampleTable::record(const SimTK::State& s) {
+    std::vector<double> row;
+    row.reserve(m_result.columnNames.size());
+    row.push_back(s.getTime());
+    for (const auto& b : m_scene.bodies()) {
+        row.push_back(pinAngle(s, b.mobod));
+        row.push_back(pinSpeed(s, b.mobod));
+    }
+    for (const auto& p : m_scene.probes()) row.push_back(p.value(s));
+    m_result.rows.push_back(std::move(row));
+}
+
+std::size_t SampleTable::column(const std::string& name) const {
+    for (std::size_t i = 0; i < m_result.columnNames.size(); ++i)
+        if (m_result.columnNames[i] == name) return i;
+    return std::numeric_limits<std::size_t>::max();
+}
+
+}  // namespace milldyn

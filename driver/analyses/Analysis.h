@@ -1,0 +1,80 @@
+#pragma once
+// The analyses a model file's `scenario:` can ask for, and what they return.
+
+#include "driver/ModelFile.h"
+#include "driver/ModelSpec.h"
+#include "driver/Simulation.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace milldyn {
+
+/// One named result with its unit, for summary.json and the printed summary.
+struct ResultScalar {
+    std::string name;
+    double value = 0;
+    std::string unit;
+    std::string doc;
+};
+
+struct AnalysisResult {
+    std::string analysis;
+    /// The time series: column i is names[i] in units[i]; rows of values.
+    std::vector<std::string> columnNames;
+    std::vector<std::string> columnUnits;
+    std::vector<std::vector<double>> rows;
+    std::vector<ResultScalar> results;
+    std::vector<std::string> notes;  ///< what happened, in words
+    RunStatistics statistics;
+    /// The columns worth a plot (indices into columnNames) and their titles.
+    std::vector<std::pair<std::string, std::vector<std::size_t>>> plots;
+
+    const ResultScalar* find(const std::string& name) const;
+};
+
+/// The reader that knows every registered element type and analysis kind.
+ModelFileReader defaultModelReader();
+
+/// Reads a model file with overrides and runs its scenario.
+AnalysisResult runModelFile(const std::string& path, const std::vector<Override>& overrides,
+                            ModelSpec* specOut = nullptr);
+
+/// The keys each analysis kind accepts (for the model-file reader).
+const ElementSchema* findAnalysisSchema(const std::string& kind);
+std::vector<std::string> analysisKinds();
+
+/// Reports progress (simulated time, end time) of a long run.
+using ProgressFn = std::function<void(double, double)>;
+
+/// Runs the model's scenario. Throws AnalysisError when it fails.
+AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress = {});
+
+// The analyses themselves (one file each).
+AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& progress);
+
+/// Sum of every probe with this role in this state.
+double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);
+
+/// The body a scenario names under `key`, or the first body when unset.
+const SceneBody& scenarioBody(const Scene& scene, const ElementSpec& scenario, const std::string& key);
+
+/// Adds the usual plots: every speed column, every torque column.
+void addDefaultPlots(AnalysisResult& result);
+
+/// Records samples of a scene into an AnalysisResult's table.
+class SampleTable {
+public:
+    SampleTable(const Scene& scene, AnalysisResult& result);
+    void record(const SimTK::State& state);
+    /// Column index of a name, or npos.
+    std::size_t column(const std::string& name) const;
+
+private:
+    const Scene& m_scene;
+    AnalysisResult& m_result;
+};
+
+}  // namespace milldyn

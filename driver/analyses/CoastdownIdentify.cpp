@@ -1,0 +1,192 @@
+// Coast-down identification: the resistance torque that makes the
+// simulated run-out after switch-off last a measured time.
+//
+// Each trial builds the scene with a candidate constant torque Mc, solves
+// steady running with the drive on, switches the drive off and integrates
+// until the run-out measure crosses zero. The run-out time falls
+// monotonically with Mc (more load, faster stop), roughly as 1/Mc, so the
+// root is found by a secant in (log Mc, log t) kept inside a bracket.
+// Nothing here uses the paper's eq (14): the validation compares with it.
+
+#include "driver/SceneBuilder.h"
+#include "driver/analyses/Analysis.h"
+
+#include <cmath>
+
+namespace milldyn {
+namespace {
+
+struct Trial {
+    double runoutTime = 0;
+    double steadySpeed = 0;  // of the speed body [rad/s]
+    double power = 0;        // absorbed by the loads in steady running [W]
+};
+
+class CoastdownProblem {
+public:
+    explicit CoastdownProblem(const ModelSpec& spec) : m_base(spec) {
+        const ElementSpec& sc = spec.scenario;
+        m_resistance = sc.text("resistance");
+        const ElementSpec* e = spec.findElement(m_resistance);
+        if (!e || e->type != "ResistanceTorque")
+            throw sc.error("resistance", "'" + m_resistance + "' is not a ResistanceTorque element of this model");
+        m_meanSpeed = sc.text("runout_measure") == "mean_speed";
+        m_runoutBody = sc.text("runout_body");
+    }
+
+    /// Simulates one coast-down with constant resistance `Mc` [N*m]; with a
+    /// table, records its time series.
+    Trial simulate(double Mc, double endLimit, AnalysisResult* record) {
+        ModelSpec spec = m_base;
+        for (auto& e : spec.elements)
+            if (e.name == m_resistance) e.params["constant_torque"].number = Mc;
+        auto scene = buildScene(spec);
+        SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
+
+        Trial trial;
+        const SceneBody& speedBody = scenarioBody(*scene, spec.scenario, "speed_body");
+        trial.steadySpeed = pinSpeed(steady, speedBody.mobod);
+        trial.power = sumProbes(*scene, steady, ProbeRole::ResistancePower);
+
+        // Momentum-weighted mean speed referred to the run-out body: each
+        // shaft weighted by its steady speed ratio w_i, so that
+        // Σ J_i·w_i·ω_i / Σ J_i·w_i² falls linearly under a constant load
+        // whatever the couplings do (the paper's mean line, eq 12).
+        const SimTK::MobilizedBody ref = scene->findBody(m_runoutBody)->mobod;
+        const double refSpeed = pinSpeed(steady, ref);
+        std::vector<std::pair<SimTK::MobilizedBody, double>> weighted;
+        double norm = 0;
+        for (const auto& b : spec.bodies) {
+            const SimTK::MobilizedBody mb = scene->findBody(b.name)->mobod;
+            const double w = pinSpeed(steady, mb) / refSpeed;
+            weighted.emplace_back(mb, b.inertia * w);
+            norm += b.inertia * w * w;
+        }
+        Simulation::Watch watch;
+        watch.what = m_meanSpeed ? "mean speed reaches zero" : m_runoutBody + " comes to rest";
+        if (m_meanSpeed)
+            watch.value = [weighted, norm](const SimTK::State& s) {
+                double sum = 0;
+                for (const auto& bw : weighted) sum += bw.second * pinSpeed(s, bw.first);
+                return sum / norm;
+            };
+        else
+            watch.value = [ref](const SimTK::State& s) { return pinSpeed(s, ref); };
+
+        scene->setDrivesOn(steady, false);
+        Simulation sim(*scene, spec.integrator);
+        sim.initialize(steady);
+        std::unique_ptr<SampleTable> table;
+        if (record) table = std::make_unique<SampleTable>(*scene, *record);
+        auto onSample = [&](const SimTK::State& s) {
+            if (table) table->record(s);
+        };
+        const auto stop = sim.run(endLimit, spec.outputs.sampleInterval, onSample, &watch);
+        const RunStatistics st = sim.statistics();
+        m_statistics.integrator = st.integrator;
+        m_statistics.accuracy = st.accuracy;
+        m_statistics.steps += st.steps;
+        m_statistics.realizations += st.realizations;
+        m_statistics.stepAttempts += st.stepAttempts;
+        ++m_trials;
+        if (!stop)
+            throw AnalysisError("coast-down with resistance " + std::to_string(Mc) + " N*m: " + watch.what +
+                                " did not happen within " + std::to_string(endLimit) + " s");
+        trial.runoutTime = *stop;
+        return trial;
+    }
+
+    /// Finds Mc with simulate(Mc).runoutTime == target (relative tolerance on Mc).
+    double identify(double target, double startGuess, double tolerance) {
+        const double endLimit = 50 * target + 10;
+        double lo = 0, hi = std::numeric_limits<double>::infinity();  // t(lo) > target > t(hi)
+        auto g = [&](double Mc, bool& tooHigh) {
+            tooHigh = false;
+            try {
+                return std::log(simulate(Mc, endLimit, nullptr).runoutTime / target);
+            } catch (const AnalysisError&) {
+                // No steady state: the drive cannot carry this load.
+                tooHigh = true;
+                return 0.0;
+            }
+        };
+        double x0 = startGuess > 0 ? startGuess : 1.0;
+        bool tooHigh = false;
+        double g0 = g(x0, tooHigh);
+        while (tooHigh) {
+            hi = x0;
+            x0 *= 0.5;
+            if (x0 < 1e-12) throw AnalysisError("coast-down identification: no load the drive can carry");
+            g0 = g(x0, tooHigh);
+        }
+        (g0 > 0 ? lo : hi) = x0;
+        // t ∝ 1/Mc to first order: the first step takes that at its word.
+        double x1 = x0 * std::exp(g0);
+        for (int iter = 0; iter < 100; ++iter) {
+            if (!(x1 > lo && x1 < hi)) x1 = std::isfinite(hi) ? (lo > 0 ? std::sqrt(lo * hi) : 0.5 * hi) : 2 * lo;
+            double g1 = g(x1, tooHigh);
+            if (tooHigh) {
+                hi = x1;
+                x1 = lo > 0 ? std::sqrt(lo * hi) : 0.5 * hi;
+                continue;
+            }
+            (g1 > 0 ? lo : hi) = x1;
+            if (std::abs(x1 - x0) <= tolerance * x1 || g1 == 0) return x1;
+            const double slope = (g1 - g0) / (std::log(x1) - std::log(x0));
+            const double next = slope < 0 ? std::exp(std::log(x1) - g1 / slope) : x1 * std::exp(g1);
+            x0 = x1;
+            g0 = g1;
+            x1 = next;
+        }
+        throw AnalysisError("coast-down identification did not converge (last bracket " + std::to_string(lo) +
+                            " .. " + std::to_string(hi) + " N*m)");
+    }
+
+    RunStatistics statistics() const { return m_statistics; }
+    int trials() const { return m_trials; }
+    double startGuess() const {
+        return m_base.findElement(m_resistance)->params.at("constant_torque").number;
+    }
+
+private:
+    ModelSpec m_base;
+    std::string m_resistance;
+    std::string m_runoutBody;
+    bool m_meanSpeed = false;
+    RunStatistics m_statistics;
+    int m_trials = 0;
+};
+
+}  // namespace
+
+AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& progress) {
+    const ElementSpec& sc = spec.scenario;
+    CoastdownProblem problem(spec);
+    const double tolerance = sc.number("tolerance");
+    const double target = sc.number("runout_time");
+    if (progress) progress(0, 1);
+    const double Mc = problem.identify(target, problem.startGuess(), tolerance);
+
+    AnalysisResult result;
+    result.analysis = "coastdown_identify";
+    const Trial final = problem.simulate(Mc, 50 * target + 10, &result);
+    result.results.push_back({"resistance_torque", Mc, "N*m",
+                              "constant resistance reproducing the run-out time (" + sc.text("runout_measure") + ")"});
+    result.results.push_back({"steady_speed", final.steadySpeed, "rad/s", "steady running speed before switch-off"});
+    result.results.push_back({"power", final.power, "W", "power absorbed by the loads in steady running (eq 15)"});
+    result.results.push_back({"runout_time", final.runoutTime, "s", "simulated run-out at the identified torque"});
+    const double idleTime = sc.number("idle_runout_time");
+    if (idleTime > 0) {
+        const double McIdle = problem.identify(idleTime, Mc, tolerance);
+        result.results.push_back({"idle_resistance_torque", McIdle, "N*m", "identified from idle_runout_time"});
+        result.results.push_back({"millstone_torque", (Mc - McIdle) * sc.number("belt_ratio"), "N*m",
+                                  "M_zh = (Mc − Mc,idle)·u_p"});
+    }
+    result.statistics = problem.statistics();
+    result.notes.push_back(std::to_string(problem.trials()) + " coast-down simulations");
+    addDefaultPlots(result);
+    if (progress) progress(1, 1);
+    return result;
+}
+
+}  // namespace milldyn

@@ -1,0 +1,93 @@
+// Transient analysis: integrate the scene from its initial state, switch
+// drives off when scheduled, and summarise steady running and run-out.
+
+#include "driver/SceneBuilder.h"
+#include "driver/analyses/Analysis.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace milldyn {
+
+AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
+    const ElementSpec& sc = spec.scenario;
+    auto scene = buildScene(spec);
+    SimTK::State state = initialState(*scene, spec);
+    const std::string start = sc.text("initial_state");
+    if (start == "rest")
+        for (const auto& b : scene->bodies()) b.mobod.setOneU(state, SimTK::MobilizerUIndex(0), 0.0);
+    if (start == "steady") state = solveSteadyState(*scene, state);
+
+    AnalysisResult result;
+    result.analysis = "transient";
+    SampleTable table(*scene, result);
+    const SceneBody& speedBody = scenarioBody(*scene, sc, "speed_body");
+    const double endTime = sc.number("end_time");
+
+    double switchTime = std::numeric_limits<double>::infinity();
+    for (const auto& e : scene->switchEvents())
+        if (e.kind == Scene::SwitchEvent::Kind::DriveOff) switchTime = std::min(switchTime, e.time);
+
+    Simulation sim(*scene, spec.integrator);
+    sim.initialize(state);
+
+    // Summary at the last sample before the first switch-off: steady running.
+    SimTK::State steady = state;
+    double peakDrive = 0, peakCoupling = 0;
+    auto onSample = [&](const SimTK::State& s) {
+        table.record(s);
+        if (s.getTime() <= switchTime) steady = s;
+        peakDrive = std::max(peakDrive, std::abs(sumProbes(*scene, s, ProbeRole::DriveTorque)));
+        for (const auto& p : scene->probes())
+            if (p.role == ProbeRole::CouplingTorque) peakCoupling = std::max(peakCoupling, std::abs(p.value(s)));
+        if (progress) progress(s.getTime(), endTime);
+    };
+
+    std::optional<double> stopTime;
+    const std::string runoutName = sc.text("runout_body");
+    if (!runoutName.empty() && std::isfinite(switchTime) && switchTime < endTime) {
+        const SimTK::MobilizedBody runout = scene->findBody(runoutName)->mobod;
+        Simulation::Watch watch{[runout](const SimTK::State& s) { return pinSpeed(s, runout); },
+                                switchTime, runoutName + " comes to rest"};
+        stopTime = sim.run(endTime, spec.outputs.sampleInterval, onSample, &watch);
+    } else {
+        sim.run(endTime, spec.outputs.sampleInterval, onSample);
+    }
+    result.statistics = sim.statistics();
+
+    scene->system().realize(steady, SimTK::Stage::Acceleration);
+    const double omega = pinSpeed(steady, speedBody.mobod);
+    const std::string at = std::isfinite(switchTime) ? "just before switch-off" : "at the end of the run";
+    result.results.push_back({"steady_speed", omega, "rad/s", "speed of " + speedBody.name + " " + at});
+    result.results.push_back({"resistance_torque", sumProbes(*scene, steady, ProbeRole::ResistanceTorque), "N*m",
+                              "sum of load torques " + at});
+    result.results.push_back({"power", sumProbes(*scene, steady, ProbeRole::ResistancePower), "W",
+                              "power absorbed by the loads " + at});
+    result.results.push_back({"drive_torque", sumProbes(*scene, steady, ProbeRole::DriveTorque), "N*m",
+                              "sum of drive torques " + at});
+    result.results.push_back({"peak_drive_torque", peakDrive, "N*m", "largest drive torque of the run"});
+    result.results.push_back({"peak_coupling_torque", peakCoupling, "N*m",
+                              "largest coupling torque of the run (start-up load)"});
+    if (start == "rest" && omega > 0) {
+        const std::size_t col = table.column(speedBody.name + ".speed");
+        for (const auto& row : result.rows)
+            if (row[col] >= 0.95 * omega) {
+                result.results.push_back({"start_time", row[0], "s",
+                                          "first sample at 95 % of the steady speed of " + speedBody.name});
+                break;
+            }
+    }
+    if (stopTime) {
+        result.results.push_back({"runout_time", *stopTime - switchTime, "s",
+                                  "from switch-off to the first stop of " + runoutName});
+        result.notes.push_back("run ended when " + runoutName + " came to rest");
+    } else if (!runoutName.empty() && std::isfinite(switchTime)) {
+        result.notes.push_back(runoutName + " did not come to rest before end_time");
+    }
+
+    addDefaultPlots(result);
+    return result;
+}
+
+}  // namespace milldyn

@@ -1,0 +1,7 @@
+#include "driver/Cli.h"
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+    return milldyn::runCli(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
+}

@@ -1,0 +1,15 @@
+#include "plugins/ElementRegistry.h"
+
+namespace milldyn {
+
+void registerInductionMotor(ElementRegistry& registry);
+void registerTorsionalCoupling(ElementRegistry& registry);
+void registerResistanceTorque(ElementRegistry& registry);
+
+void registerBuiltinElements(ElementRegistry& registry) {
+    registerInductionMotor(registry);
+    registerTorsionalCoupling(registry);
+    registerResistanceTorque(registry);
+}
+
+}  // namespace milldyn

@@ -1,0 +1,121 @@
+#pragma once
+// Plain data shared by the model-file reader and the element registry.
+// Nothing here knows Simbody or YAML: an element type declares which keys it
+// accepts (with SI unit and valid range), the reader checks a model file
+// against that declaration, and the element's builder receives the checked
+// values as an ElementSpec.
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace milldyn {
+
+/// Where a value came from, for diagnostics ("file:line:col"). 1-based.
+struct SourceLocation {
+    std::string file;
+    int line = 0;
+    int column = 0;
+};
+
+/// Thrown for bad input; carries the location and the key so the driver can
+/// print `file:line:col: error: key: reason` and exit 2.
+class SpecError : public std::runtime_error {
+public:
+    SpecError(SourceLocation where, std::string key, const std::string& reason)
+        : std::runtime_error(reason), m_where(std::move(where)), m_key(std::move(key)) {}
+    const SourceLocation& where() const { return m_where; }
+    const std::string& key() const { return m_key; }
+    /// The one-line diagnostic the driver prints.
+    std::string formatted() const;
+
+private:
+    SourceLocation m_where;
+    std::string m_key;
+};
+
+enum class ParamKind {
+    Quantity,   ///< a number with an optional unit, converted to SI
+    Choice,     ///< one word out of a fixed list
+    BodyRef,    ///< the name of a body in the model
+    BodyPair,   ///< a list of two body names [from, to]
+    Text,       ///< free text (names, descriptions)
+};
+
+/// One key an element type accepts.
+struct ParamSchema {
+    std::string key;
+    ParamKind kind = ParamKind::Quantity;
+    std::string unit = "1";             ///< SI unit for Quantity ("N*m/rad", "1")
+    bool required = true;
+    std::optional<double> defaultValue; ///< Quantity default (SI), if optional
+    std::string defaultText;            ///< Choice/Text default, if optional
+    std::vector<std::string> choices;   ///< Choice: allowed words
+    std::optional<double> min;          ///< Quantity lower bound
+    bool minExclusive = false;
+    std::optional<double> max;          ///< Quantity upper bound
+    bool maxExclusive = false;
+    std::string doc;                    ///< one line for docs and `info`
+
+    // Readable declarations: quantity("stiffness", "N*m/rad", "...").atLeast(0)
+    static ParamSchema quantity(std::string key, std::string unit, std::string doc);
+    static ParamSchema choice(std::string key, std::vector<std::string> choices, std::string doc);
+    static ParamSchema body(std::string key, std::string doc);
+    static ParamSchema bodyPair(std::string key, std::string doc);
+    static ParamSchema text(std::string key, std::string doc);
+    ParamSchema& optional(double defaultSI);
+    ParamSchema& optional(std::string defaultWord);
+    ParamSchema& above(double bound);    ///< value > bound
+    ParamSchema& atLeast(double bound);  ///< value >= bound
+    ParamSchema& below(double bound);    ///< value < bound
+    ParamSchema& atMost(double bound);   ///< value <= bound
+};
+
+/// A checked parameter value.
+struct ParamValue {
+    double number = 0;                  ///< Quantity, SI
+    std::string text;                   ///< Choice, BodyRef, Text
+    std::vector<std::string> names;     ///< BodyPair
+    SourceLocation where;
+    bool given = false;                 ///< false: filled from the default
+};
+
+/// One element instance as read from a model file.
+struct ElementSpec {
+    std::string type;
+    std::string name;
+    SourceLocation where;
+    std::map<std::string, ParamValue> params;
+
+    /// Quantity in SI; throws SpecError if absent.
+    double number(const std::string& key) const;
+    const std::string& text(const std::string& key) const;
+    const std::vector<std::string>& names(const std::string& key) const;
+    bool has(const std::string& key) const;
+    /// The location of a key (the element's own if the key was defaulted).
+    SourceLocation whereOf(const std::string& key) const;
+    /// A SpecError about this key, located where the key was written.
+    SpecError error(const std::string& key, const std::string& reason) const;
+};
+
+/// The declaration of an element type: its keys and a check across keys
+/// (for example rated speed below synchronous speed). The cross-check
+/// throws SpecError via ElementSpec::error().
+struct ElementSchema {
+    std::string type;
+    std::string doc;
+    std::vector<ParamSchema> params;
+    std::function<void(const ElementSpec&)> crossCheck;
+
+    const ParamSchema* find(const std::string& key) const;
+};
+
+/// Edit distance, for "did you mean" suggestions.
+std::size_t editDistance(const std::string& a, const std::string& b);
+/// The candidate closest to `word`, or "" if none is close enough to help.
+std::string nearestName(const std::string& word, const std::vector<std::string>& candidates);
+
+}  // namespace milldyn

@@ -1,0 +1,65 @@
+#include "plugins/Scene.h"
+
+#include <stdexcept>
+
+namespace milldyn {
+
+Scene::Scene() : m_matter(m_system), m_forces(m_system) {}
+
+void Scene::addBody(const std::string& name, const SimTK::MobilizedBody& mobod) {
+    m_bodies.push_back({name, mobod});
+}
+
+const SceneBody* Scene::findBody(const std::string& name) const {
+    for (const auto& b : m_bodies)
+        if (b.name == name) return &b;
+    return nullptr;
+}
+
+void Scene::addForce(const std::string& name, const std::string& type, SimTK::ForceIndex index) {
+    m_forceIndex[name] = {type, index};
+}
+
+SimTK::ForceIndex Scene::findForce(const std::string& name) const {
+    auto it = m_forceIndex.find(name);
+    if (it == m_forceIndex.end()) return SimTK::ForceIndex();
+    return it->second.second;
+}
+
+void Scene::addSwitchable(const std::string& name, std::function<void(SimTK::State&, bool)> setOn) {
+    m_switchables.emplace_back(name, std::move(setOn));
+}
+
+void Scene::setDrivesOn(SimTK::State& state, bool on) const {
+    for (const auto& s : m_switchables) s.second(state, on);
+}
+
+void Scene::addSpeedRelation(const std::string& from, const std::string& to, double ratio) {
+    m_speedRelations.push_back({from, to, ratio});
+}
+
+std::map<std::string, double> Scene::speedHints() const {
+    std::map<std::string, double> hints = m_speedHints;
+    // Spread along couplings until nothing changes (at most one pass per body).
+    for (std::size_t pass = 0; pass <= m_bodies.size(); ++pass) {
+        bool changed = false;
+        for (const auto& r : m_speedRelations) {
+            const bool hasFrom = hints.count(r.from) > 0, hasTo = hints.count(r.to) > 0;
+            if (hasFrom && !hasTo) { hints[r.to] = hints[r.from] / r.ratio; changed = true; }
+            if (hasTo && !hasFrom) { hints[r.from] = hints[r.to] * r.ratio; changed = true; }
+        }
+        if (!changed) break;
+    }
+    for (const auto& b : m_bodies) hints.emplace(b.name, 0.0);
+    return hints;
+}
+
+double pinSpeed(const SimTK::State& state, const SimTK::MobilizedBody& body) {
+    return body.getOneU(state, SimTK::MobilizerUIndex(0));
+}
+
+double pinAngle(const SimTK::State& state, const SimTK::MobilizedBody& body) {
+    return body.getOneQ(state, SimTK::MobilizerQIndex(0));
+}
+
+}  // namespace milldyn

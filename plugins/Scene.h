@@ -1,0 +1,135 @@
+#pragma once
+// A Scene is one Simbody system built from a model, plus the handles the
+// analyses need: bodies by name, the force elements, and the output probes
+// (named scalar functions of the state). A Scene is never shared between
+// threads; a sweep builds one per worker.
+
+#include <Simbody.h>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace milldyn {
+
+/// What a probe measures, so that analyses can find, for example, every
+/// resistance torque without knowing the element types.
+enum class ProbeRole {
+    Generic,
+    DriveTorque,       ///< torque a drive applies to its shaft [N*m]
+    ResistanceTorque,  ///< magnitude of a load torque opposing rotation [N*m]
+    ResistancePower,   ///< power a load absorbs [W]
+    CouplingTorque,    ///< torque transmitted by a coupling [N*m]
+    BodySpeed,         ///< angular speed of a body about its joint axis [rad/s]
+};
+
+/// A named scalar output, evaluated on a state realized to Stage::Dynamics
+/// at least (Acceleration for probes that say so).
+struct Probe {
+    std::string name;   ///< "belt.torque"
+    std::string unit;   ///< SI unit string, "N*m"
+    ProbeRole role = ProbeRole::Generic;
+    SimTK::Stage stage = SimTK::Stage::Dynamics;
+    std::function<double(const SimTK::State&)> value;
+};
+
+/// A body the scene holds: a shaft on a pin, rotating about its z axis.
+struct SceneBody {
+    std::string name;
+    SimTK::MobilizedBody mobod;
+};
+
+/// A relation that is stationary in steady running (for example a
+/// coupling's twist rate); the steady-state solver drives these to zero.
+struct SteadyResidual {
+    std::string name;
+    std::function<double(const SimTK::State&)> value;  ///< at Stage::Velocity
+};
+
+/// One line of `milldyn info`: what was built and why.
+struct BuildNote {
+    std::string what;
+    std::string why;
+};
+
+class Scene {
+public:
+    Scene();
+    Scene(const Scene&) = delete;
+    Scene& operator=(const Scene&) = delete;
+
+    SimTK::MultibodySystem& system() { return m_system; }
+    const SimTK::MultibodySystem& system() const { return m_system; }
+    SimTK::SimbodyMatterSubsystem& matter() { return m_matter; }
+    const SimTK::SimbodyMatterSubsystem& matter() const { return m_matter; }
+    SimTK::GeneralForceSubsystem& forces() { return m_forces; }
+
+    void addBody(const std::string& name, const SimTK::MobilizedBody& mobod);
+    /// nullptr when no body has that name.
+    const SceneBody* findBody(const std::string& name) const;
+    const std::vector<SceneBody>& bodies() const { return m_bodies; }
+
+    void addProbe(Probe probe) { m_probes.push_back(std::move(probe)); }
+    const std::vector<Probe>& probes() const { return m_probes; }
+
+    void addSteadyResidual(SteadyResidual r) { m_steadyResiduals.push_back(std::move(r)); }
+    const std::vector<SteadyResidual>& steadyResiduals() const { return m_steadyResiduals; }
+
+    /// Force elements by name, for analyses that need the handle.
+    void addForce(const std::string& name, const std::string& type, SimTK::ForceIndex index);
+    SimTK::ForceIndex findForce(const std::string& name) const;
+
+    /// Scheduled switchings (a motor switched off): the integrator stops
+    /// exactly at `time`, `apply` changes the state, integration restarts.
+    struct SwitchEvent {
+        enum class Kind { DriveOff, LoadOn };
+        Kind kind;
+        double time;
+        std::string what;
+        std::function<void(SimTK::State&)> apply;
+    };
+    void addSwitchEvent(SwitchEvent e) { m_switchEvents.push_back(std::move(e)); }
+    const std::vector<SwitchEvent>& switchEvents() const { return m_switchEvents; }
+
+    /// A speed every steady-state search may start from for a body [rad/s]
+    /// (a motor knows its shaft runs near synchronous speed).
+    void addSpeedHint(const std::string& body, double omega) { m_speedHints[body] = omega; }
+    /// Steady speed relations ω_from = ratio·ω_to (couplings), so hints
+    /// reach bodies no motor drives.
+    void addSpeedRelation(const std::string& from, const std::string& to, double ratio);
+    /// Hinted speed of every body (0 where nothing reaches it).
+    std::map<std::string, double> speedHints() const;
+
+    /// Elements that can be told "you are off from now on" by an analysis
+    /// (coast-down scenarios switch the drive off at t = 0).
+    void addSwitchable(const std::string& name, std::function<void(SimTK::State&, bool)> setOn);
+    /// Switches every registered drive on or off in `state`.
+    void setDrivesOn(SimTK::State& state, bool on) const;
+
+    void note(const std::string& what, const std::string& why) { m_notes.push_back({what, why}); }
+    const std::vector<BuildNote>& notes() const { return m_notes; }
+
+private:
+    SimTK::MultibodySystem m_system;
+    SimTK::SimbodyMatterSubsystem m_matter;
+    SimTK::GeneralForceSubsystem m_forces;
+    std::vector<SceneBody> m_bodies;
+    std::vector<Probe> m_probes;
+    std::vector<SteadyResidual> m_steadyResiduals;
+    std::map<std::string, std::pair<std::string, SimTK::ForceIndex>> m_forceIndex;
+    std::vector<SwitchEvent> m_switchEvents;
+    std::map<std::string, double> m_speedHints;
+    struct SpeedRelation { std::string from, to; double ratio; };
+    std::vector<SpeedRelation> m_speedRelations;
+    std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_switchables;
+    std::vector<BuildNote> m_notes;
+};
+
+/// The angular speed of a pin-jointed body about its axis [rad/s].
+double pinSpeed(const SimTK::State& state, const SimTK::MobilizedBody& body);
+/// The angle of a pin-jointed body about its axis [rad].
+double pinAngle(const SimTK::State& state, const SimTK::MobilizedBody& body);
+
+}  // namespace milldyn

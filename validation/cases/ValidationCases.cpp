@@ -1,0 +1,75 @@
+#include "validation/cases/ValidationCases.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <sstream>
+
+namespace milldyn {
+
+ValidationRow compareRow(std::string caseName, std::string quantity, std::string unit, double value,
+                         double oracle, double tolerance, std::string note) {
+    ValidationRow r;
+    r.caseName = std::move(caseName);
+    r.quantity = std::move(quantity);
+    r.unit = std::move(unit);
+    r.multibody = value;
+    r.oracle = oracle;
+    r.relError = std::abs(value - oracle) / std::max(std::abs(oracle), 1e-300);
+    r.tolerance = tolerance;
+    r.status = (std::isfinite(r.relError) && r.relError <= tolerance) ? "pass" : "fail";
+    r.note = std::move(note);
+    return r;
+}
+
+std::vector<ValidationRow> runValidationCases(const std::string& filter) {
+    std::vector<ValidationRow> all;
+    for (const CaseGroup& group : {CaseGroup(burrMillCases)}) {
+        auto rows = group(filter);
+        all.insert(all.end(), rows.begin(), rows.end());
+    }
+    return all;
+}
+
+std::string formatValidationJson(const std::vector<ValidationRow>& rows) {
+    nlohmann::ordered_json array = nlohmann::ordered_json::array();
+    for (const auto& r : rows) {
+        nlohmann::ordered_json j;
+        j["case"] = r.caseName;
+        j["quantity"] = r.quantity;
+        j["unit"] = r.unit;
+        j["multibody"] = r.multibody ? nlohmann::ordered_json(*r.multibody) : nlohmann::ordered_json();
+        j["oracle"] = r.oracle;
+        if (r.paper) j["paper"] = *r.paper;
+        j["rel_error"] = r.relError;
+        j["tolerance"] = r.tolerance;
+        j["status"] = r.status;
+        if (!r.note.empty()) j["note"] = r.note;
+        array.push_back(j);
+    }
+    return array.dump(2) + "\n";
+}
+
+std::string formatValidationTable(const std::vector<ValidationRow>& rows) {
+    std::ostringstream out;
+    int pass = 0, fail = 0, flagged = 0;
+    for (const auto& r : rows) {
+        out << std::left << std::setw(8) << r.status << std::setw(44) << r.caseName << std::setw(34) << r.quantity
+            << std::setprecision(8) << std::setw(16) << (r.multibody ? *r.multibody : *r.paper) << " vs "
+            << std::setw(16) << r.oracle << r.unit << "  rel " << std::setprecision(2) << r.relError << " (tol "
+            << r.tolerance << ")\n";
+        if (!r.note.empty() && r.status != "pass") out << "        note: " << r.note << "\n";
+        (r.status == "pass" ? pass : r.status == "fail" ? fail : flagged)++;
+    }
+    out << pass << " passed, " << fail << " failed, " << flagged << " flagged\n";
+    return out.str();
+}
+
+std::string modelsDirectory() {
+    if (const char* env = std::getenv("MILLDYN_MODELS")) return env;
+    return MILLDYN_SOURCE_DIR "/models";
+}
+
+}  // namespace milldyn

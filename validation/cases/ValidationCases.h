@@ -1,0 +1,46 @@
+#pragma once
+// Validation cases: each compares one quantity of the multibody model (or
+// of the paper's printed data) with an oracle written from the paper's
+// equations (validation/oracles, which know nothing of Simbody).
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace milldyn {
+
+struct ValidationRow {
+    std::string caseName;              ///< starts with the machine: burr_mill_...
+    std::string quantity;
+    std::string unit;
+    std::optional<double> multibody;   ///< absent for paper-vs-oracle rows
+    double oracle = 0;
+    std::optional<double> paper;       ///< the printed value, where compared
+    double relError = 0;
+    double tolerance = 0;
+    std::string status;                ///< pass | fail | flagged
+    std::string note;
+};
+
+/// Compares `value` with `oracle`: relative error against |oracle|.
+ValidationRow compareRow(std::string caseName, std::string quantity, std::string unit, double value,
+                         double oracle, double tolerance, std::string note = "");
+
+/// A group of cases (one machine); `filter` selects case names containing it.
+using CaseGroup = std::function<std::vector<ValidationRow>(const std::string& filter)>;
+
+/// Runs every case whose name contains `filter` (all when empty).
+std::vector<ValidationRow> runValidationCases(const std::string& filter);
+
+/// The JSON array `validate --json` prints.
+std::string formatValidationJson(const std::vector<ValidationRow>& rows);
+/// A table for people.
+std::string formatValidationTable(const std::vector<ValidationRow>& rows);
+
+/// Where the shipped model files are: $MILLDYN_MODELS, else the source tree's models/.
+std::string modelsDirectory();
+
+std::vector<ValidationRow> burrMillCases(const std::string& filter);
+
+}  // namespace milldyn
