@@ -388,14 +388,24 @@ private:
         for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
             const std::string& part = parts[i];
             if (node.IsSequence()) {
+                // A default YAML::Node is a defined null, so a flag says "found".
                 YAML::Node found;
-                for (std::size_t k = 0; k < node.size() && !found; ++k)
-                    if (node[k].IsMap() && node[k]["name"] && node[k]["name"].Scalar() == part) found = node[k];
-                if (!found && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos) {
+                bool haveFound = false;
+                for (std::size_t k = 0; k < node.size() && !haveFound; ++k)
+                    if (node[k].IsMap() && node[k]["name"] && node[k]["name"].IsScalar() &&
+                        node[k]["name"].Scalar() == part) {
+                        found.reset(node[k]);
+                        haveFound = true;
+                    }
+                if (!haveFound && !part.empty() && part.size() < 9 &&
+                    part.find_first_not_of("0123456789") == std::string::npos) {
                     const std::size_t index = std::stoul(part);
-                    if (index < node.size()) found = node[index];
+                    if (index < node.size()) {
+                        found.reset(node[index]);
+                        haveFound = true;
+                    }
                 }
-                if (!found)
+                if (!haveFound)
                     throw SpecError({"<" + label + ">", 1, 1}, o.path,
                                     "no list item named '" + part + "' at this point of the path");
                 node.reset(found);  // operator= would copy found into the tree

@@ -118,7 +118,8 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
 
     long sampleIndex = 1;
     SimTK::State lastStepEnd = integ.getState();
-    double lastWatch = watch ? watch->value(lastStepEnd) : 0;
+    auto watched = [watch](const SimTK::State& st) { return watch->value(st) - watch->threshold; };
+    double lastWatch = watch ? watched(lastStepEnd) : 0;
 
     while (true) {
         const double nextSample = std::min(t0 + sampleIndex * sampleInterval, endTime);
@@ -134,17 +135,14 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         system.realize(s, SimTK::Stage::Velocity);
 
         if (watch && s.getTime() >= watch->notBefore) {
-            const double value = watch->value(s);
+            const double value = watched(s);
             if (lastWatch > 0 && value <= 0) {
-                const double tCross = locateCrossing(lastStepEnd, s.getTime(), *watch);
-                auto again = makeIntegrator(system, m_settings.name);
-                again->setAccuracy(m_settings.accuracy);
-                again->setInternalStepLimit(kInternalStepLimit);
-                again->initialize(lastStepEnd);
-                again->stepTo(tCross, tCross);
-                m_extra.realizations += again->getNumRealizations();
-                emit(again->getState());
-                return tCross;
+                const SimTK::State crossing = locateCrossing(lastStepEnd, s.getTime(), *watch);
+                emit(crossing);
+                const double rate = watch->rate(crossing);
+                if (!(rate < 0))
+                    throw AnalysisError(watch->what + ": not falling at " + timeText(crossing.getTime()));
+                return crossing.getTime() + watch->value(crossing) / -rate;
             }
             if (!integ.isStateInterpolated()) lastWatch = value;
         }
@@ -170,34 +168,40 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             integ.initialize(restart);
             integ.resetAllStatistics();
             lastStepEnd = integ.getState();
-            if (watch) lastWatch = watch->value(lastStepEnd);
+            if (watch) lastWatch = watched(lastStepEnd);
         }
         if (status == SimTK::Integrator::EndOfSimulation) return std::nullopt;
     }
 }
 
-double Simulation::locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch) {
+SimTK::State Simulation::locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch) {
     const SimTK::System& system = m_scene.system();
-    auto valueAt = [&](double t) {
+    // Each probe re-integrates from the last accepted step: exact to the
+    // integration accuracy, unlike the integrator's interpolant.
+    auto stateAt = [&](double t) {
         auto integ = makeIntegrator(system, m_settings.name);
         integ->setAccuracy(m_settings.accuracy);
         integ->setInternalStepLimit(kInternalStepLimit);
+        if (m_settings.maxStep > 0) integ->setMaximumStepSize(m_settings.maxStep);
         integ->initialize(before);
         if (t > before.getTime()) integ->stepTo(t, t);
         m_extra.realizations += integ->getNumRealizations();
-        const SimTK::State& s = integ->getState();
-        system.realize(s, SimTK::Stage::Velocity);
-        return watch.value(s);
+        SimTK::State s = integ->getState();
+        system.realize(s, SimTK::Stage::Acceleration);
+        return s;
     };
+    auto f = [&](const SimTK::State& s) { return watch.value(s) - watch.threshold; };
     // Illinois (modified regula falsi): bracketed, superlinear on smooth f.
-    double a = before.getTime(), fa = watch.value(before);
-    double b = tAfter, fb = valueAt(b);
+    double a = before.getTime(), fa = f(before);
+    SimTK::State sb = stateAt(tAfter);
+    double b = sb.getTime(), fb = f(sb);
     int side = 0;
     for (int i = 0; i < 100; ++i) {
-        if (b - a <= 1e-13 * std::max(1.0, std::abs(b))) break;
+        if (b - a <= 1e-14 * std::max(1.0, std::abs(b)) || fb == 0) break;
         double c = (a * fb - b * fa) / (fb - fa);
         if (!(c > a && c < b)) c = 0.5 * (a + b);
-        const double fc = valueAt(c);
+        SimTK::State sc = stateAt(c);
+        const double fc = f(sc);
         if (fc > 0) {
             a = c;
             fa = fc;
@@ -206,12 +210,16 @@ double Simulation::locateCrossing(const SimTK::State& before, double tAfter, con
         } else {
             b = c;
             fb = fc;
+            sb = sc;
             if (side == +1) fa *= 0.5;
             side = +1;
-            if (fc == 0) break;
+        }
+        if (std::abs(fc) <= 1e-14 * std::max(1.0, std::abs(watch.threshold))) {
+            sb = sc;
+            break;
         }
     }
-    return b;
+    return sb;
 }
 
 SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {

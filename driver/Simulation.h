@@ -44,10 +44,16 @@ public:
 
     using SampleFn = std::function<void(const SimTK::State&)>;
 
-    /// A function of the state whose first crossing from > 0 to <= 0 after
-    /// `notBefore` [s] ends the run (realized to Stage::Velocity).
+    /// A falling quantity whose arrival at zero ends the run (a shaft's
+    /// speed at standstill). Loads are regularised near zero speed, so the
+    /// quantity only creeps towards zero: the run detects its crossing of
+    /// `threshold` (above the regularisation band, where the dynamics are
+    /// still the unregularised ones), then extrapolates to zero with the
+    /// exact rate there; the extrapolation spans threshold/|rate| seconds.
     struct Watch {
-        std::function<double(const SimTK::State&)> value;
+        std::function<double(const SimTK::State&)> value;  ///< at Stage::Velocity
+        std::function<double(const SimTK::State&)> rate;   ///< d(value)/dt, at Acceleration
+        double threshold = 0;
         double notBefore = 0;
         std::string what;
     };
@@ -55,8 +61,8 @@ public:
     /// Advances to `endTime`, calling onSample at every multiple of
     /// `sampleInterval` (and at the start and the end) with a state
     /// realized to Acceleration. Applies the scene's switch events. With a
-    /// watch, stops at its first crossing and returns its time (the last
-    /// sample is then the crossing state); otherwise returns nullopt.
+    /// watch, stops at the threshold crossing (the last sample) and returns
+    /// the extrapolated time of zero; otherwise returns nullopt.
     /// Throws AnalysisError if the integrator fails or a sample is not finite.
     std::optional<double> run(double endTime, double sampleInterval, const SampleFn& onSample,
                               const Watch* watch = nullptr);
@@ -72,7 +78,7 @@ private:
 
     void checkFinite(const SimTK::State& state) const;
     void accumulateStatistics();
-    double locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch);
+    SimTK::State locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch);
 };
 
 /// Solves for steady running: all accelerations zero and every steady

@@ -30,6 +30,10 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
             .optional("rest"),
         P::body("speed_body", "body whose speed the summary reports (default: the first)").optional(""),
         P::body("runout_body", "body whose first stop after switch-off ends the run-out").optional(""),
+        P::quantity("stop_speed", "rad/s",
+                    "standstill is detected at this speed and extrapolated to zero; keep it above "
+                    "the loads' regularisation band (>= 5 smoothing_speed)")
+            .optional(0.1).above(0),
     };
     schemas["transient"] = transient;
 
@@ -51,6 +55,10 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
         P::body("speed_body", "body whose steady speed is reported (default: the first)").optional(""),
         P::quantity("tolerance", "1", "relative tolerance on the identified torque")
             .optional(1e-10).above(0).atMost(1e-2),
+        P::quantity("stop_speed", "rad/s",
+                    "standstill is detected at this speed and extrapolated to zero; keep it above "
+                    "the loads' regularisation band (>= 5 smoothing_speed)")
+            .optional(0.1).above(0),
     };
     schemas["coastdown_identify"] = identify;
     return schemas;
@@ -105,6 +113,27 @@ double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role) 
     for (const auto& p : scene.probes())
         if (p.role == role) sum += p.value(state);
     return sum;
+}
+
+void checkStopSpeed(const ModelSpec& spec) {
+    const double stop = spec.scenario.number("stop_speed");
+    for (const auto& e : spec.elements)
+        if (e.type == "ResistanceTorque" && stop < 5 * e.number("smoothing_speed"))
+            throw spec.scenario.error("stop_speed",
+                                      "must be at least 5 times the smoothing_speed of " + e.name + " (" +
+                                          std::to_string(e.number("smoothing_speed")) +
+                                          " rad/s): below that the load is no longer the model's law");
+}
+
+Simulation::Watch speedWatch(const SimTK::MobilizedBody& body, double threshold, double notBefore,
+                             const std::string& what) {
+    Simulation::Watch w;
+    w.value = [body](const SimTK::State& s) { return pinSpeed(s, body); };
+    w.rate = [body](const SimTK::State& s) { return body.getOneUDot(s, SimTK::MobilizerUIndex(0)); };
+    w.threshold = threshold;
+    w.notBefore = notBefore;
+    w.what = what;
+    return w;
 }
 
 const SceneBody& scenarioBody(const Scene& scene, const ElementSpec& scenario, const std::string& key) {

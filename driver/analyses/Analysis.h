@@ -58,6 +58,14 @@ AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& pro
 /// Sum of every probe with this role in this state.
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);
 
+/// Throws SpecError if scenario.stop_speed lies inside a load's
+/// regularisation band.
+void checkStopSpeed(const ModelSpec& spec);
+
+/// Watches a body's speed falling to zero (stop detected at `threshold`).
+Simulation::Watch speedWatch(const SimTK::MobilizedBody& body, double threshold, double notBefore,
+                             const std::string& what);
+
 /// The body a scenario names under `key`, or the first body when unset.
 const SceneBody& scenarioBody(const Scene& scene, const ElementSpec& scenario, const std::string& key);
 

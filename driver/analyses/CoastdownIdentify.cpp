@@ -26,6 +26,7 @@ class CoastdownProblem {
 public:
     explicit CoastdownProblem(const ModelSpec& spec) : m_base(spec) {
         const ElementSpec& sc = spec.scenario;
+        checkStopSpeed(spec);
         m_resistance = sc.text("resistance");
         const ElementSpec* e = spec.findElement(m_resistance);
         if (!e || e->type != "ResistanceTorque")
@@ -62,16 +63,21 @@ public:
             weighted.emplace_back(mb, b.inertia * w);
             norm += b.inertia * w * w;
         }
-        Simulation::Watch watch;
-        watch.what = m_meanSpeed ? "mean speed reaches zero" : m_runoutBody + " comes to rest";
-        if (m_meanSpeed)
+        const double stopSpeed = spec.scenario.number("stop_speed");
+        Simulation::Watch watch = speedWatch(ref, stopSpeed, 0, m_runoutBody + " comes to rest");
+        if (m_meanSpeed) {
+            watch.what = "mean speed reaches zero";
             watch.value = [weighted, norm](const SimTK::State& s) {
                 double sum = 0;
                 for (const auto& bw : weighted) sum += bw.second * pinSpeed(s, bw.first);
                 return sum / norm;
             };
-        else
-            watch.value = [ref](const SimTK::State& s) { return pinSpeed(s, ref); };
+            watch.rate = [weighted, norm](const SimTK::State& s) {
+                double sum = 0;
+                for (const auto& bw : weighted) sum += bw.second * bw.first.getOneUDot(s, SimTK::MobilizerUIndex(0));
+                return sum / norm;
+            };
+        }
 
         scene->setDrivesOn(steady, false);
         Simulation sim(*scene, spec.integrator);

@@ -12,6 +12,7 @@ namespace milldyn {
 
 AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
     const ElementSpec& sc = spec.scenario;
+    checkStopSpeed(spec);
     auto scene = buildScene(spec);
     SimTK::State state = initialState(*scene, spec);
     const std::string start = sc.text("initial_state");
@@ -47,9 +48,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
     std::optional<double> stopTime;
     const std::string runoutName = sc.text("runout_body");
     if (!runoutName.empty() && std::isfinite(switchTime) && switchTime < endTime) {
-        const SimTK::MobilizedBody runout = scene->findBody(runoutName)->mobod;
-        Simulation::Watch watch{[runout](const SimTK::State& s) { return pinSpeed(s, runout); },
-                                switchTime, runoutName + " comes to rest"};
+        const Simulation::Watch watch = speedWatch(scene->findBody(runoutName)->mobod, sc.number("stop_speed"),
+                                                   switchTime, runoutName + " comes to rest");
         stopTime = sim.run(endTime, spec.outputs.sampleInterval, onSample, &watch);
     } else {
         sim.run(endTime, spec.outputs.sampleInterval, onSample);

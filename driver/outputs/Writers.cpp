@@ -81,7 +81,7 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
         const std::string png = dir + "/" + plot.first + ".png";
         const std::string tmpPng = temporaryNameBeside(png);
         std::ostringstream script;
-        script << "set terminal pngcairo size 1000,560 font 'DejaVu Sans,10'\n"
+        script << "set terminal pngcairo noenhanced size 1000,560 font 'DejaVu Sans,10'\n"
                << "set output " << quoteForGnuplot(tmpPng) << "\n"
                << "set datafile separator ','\nset key outside right\nset grid\n"
                << "set xlabel 'time [s]'\nset ylabel " << quoteForGnuplot(plot.first + " [" +

@@ -146,15 +146,26 @@ void table1Case(std::size_t i, std::vector<ValidationRow>& rows) {
         // each) by u_p: two roundings of 0.05 N*m times 3.12.
         const double halfUnit = 2 * 0.05 * mill.beltRatio;
         rows.push_back(paperRow(name, "M_zh printed vs (Mc-Mc_idle)u_p", "N*m", row.Mzh_Nm, check.Mzh_Nm, halfUnit,
-                                false, ""));
+                                misprint, misprintNote));
     }
     const double J = pm.J1 + mill.J2;
     const auto motor = oc::MotorLinearBranch::fromCoefficients(pm.M00, pm.b0);
     if (misprint) {
-        const double corrected = oc::identifyResistanceMeanLine(motor, J, 1.00);
-        rows.push_back(paperRow(name, "Mc printed vs eq 14 at t_v = 1.00 s", "N*m", row.Mc_Nm, corrected, 0.05, false,
+        // The corrected reading t_v = 1.00 s must reproduce every printed value.
+        const double tCorrected = 1.00;
+        const double Mc = oc::identifyResistanceMeanLine(motor, J, tCorrected);
+        const double McIdle = oc::identifyResistanceMeanLine(motor, J, idle.runoutTime_s);
+        const double w = motor.calcSteadySpeed(Mc);
+        const std::string at = " at t_v = 1.00 s";
+        rows.push_back(paperRow(name, "Mc printed vs eq 14" + at, "N*m", row.Mc_Nm, Mc, 0.05, false, ""));
+        rows.push_back(paperRow(name, "omega printed vs eq 13" + at, "rad/s", row.omega_radps, w, 0.05, false, ""));
+        rows.push_back(paperRow(name, "N_c printed vs eq 15" + at, "W", row.power_W, oc::calcResistancePower(Mc, w), 5.0,
+                                false, ""));
+        rows.push_back(paperRow(name, "M_zh printed vs (Mc-Mc_idle)u_p" + at, "N*m", row.Mzh_Nm,
+                                oc::calcMillstoneTorque(Mc, McIdle, mill.beltRatio), 2 * 0.05 * mill.beltRatio, false,
                                 ""));
-        rows.back().note = "the corrected reading of the misprinted t_v";
+        for (std::size_t k = rows.size() - 4; k < rows.size(); ++k)
+            rows[k].note = "the corrected reading of the misprinted t_v (1.10 s printed)";
     }
 
     // The multibody identification: root-finding on simulated coast-downs.

@@ -56,7 +56,7 @@ std::string formatValidationTable(const std::vector<ValidationRow>& rows) {
     std::ostringstream out;
     int pass = 0, fail = 0, flagged = 0;
     for (const auto& r : rows) {
-        out << std::left << std::setw(8) << r.status << std::setw(44) << r.caseName << std::setw(34) << r.quantity
+        out << std::left << std::setw(8) << r.status << std::setw(38) << r.caseName << std::setw(52) << r.quantity
             << std::setprecision(8) << std::setw(16) << (r.multibody ? *r.multibody : *r.paper) << " vs "
             << std::setw(16) << r.oracle << r.unit << "  rel " << std::setprecision(2) << r.relError << " (tol "
             << r.tolerance << ")\n";
