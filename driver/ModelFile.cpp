@@ -5,6 +5,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -73,7 +74,12 @@ public:
         checkKeys(root, "", {"format_version", "name", "description", "bodies", "elements",
                              "scenario", "integrator", "outputs"});
         const YAML::Node version = required(root, "format_version", "");
-        spec.formatVersion = static_cast<int>(readNumber(version, "format_version", "1"));
+        const double versionNumber = readNumber(version, "format_version", "1");
+        if (!(versionNumber >= 1 && versionNumber <= 1e6) || versionNumber != std::floor(versionNumber))
+            throw error(version, "format_version",
+                        "must be a whole number (this milldyn reads version " +
+                            std::to_string(kModelFormatVersion) + "), got " + scalar(version, "format_version"));
+        spec.formatVersion = static_cast<int>(versionNumber);
         if (spec.formatVersion != kModelFormatVersion)
             throw error(version, "format_version",
                         "unsupported format version " + scalar(version, "format_version") +
@@ -93,6 +99,19 @@ private:
     std::string m_file;
     const ModelFileReader& m_lookups;
     std::vector<std::pair<YAML::Node, std::string>> m_overridden;  // node, "--set path"
+    struct AddedKey {
+        YAML::Node map;
+        std::string key;
+        std::string label;
+    };
+    std::vector<AddedKey> m_addedKeys;  // keys --set created, for their diagnostics
+
+    SourceLocation whereKey(const YAML::Node& map, const YAML::Node& keyNode) const {
+        if (keyNode.IsScalar())
+            for (const auto& a : m_addedKeys)
+                if (a.map.is(map) && a.key == keyNode.Scalar()) return {"<" + a.label + ">", 1, 1};
+        return where(keyNode);
+    }
 
     SourceLocation where(const YAML::Node& n) const {
         for (const auto& o : m_overridden)
@@ -141,12 +160,12 @@ private:
         std::set<std::string> seen;
         for (auto it = map.begin(); it != map.end(); ++it) {
             const std::string key = it->first.IsScalar() ? it->first.Scalar() : std::string("?");
-            if (!seen.insert(key).second) throw error(it->first, prefix + key, "duplicate key");
+            if (!seen.insert(key).second) throw SpecError(whereKey(map, it->first), prefix + key, "duplicate key");
             bool known = false;
             for (const auto& a : allowed) known = known || a == key;
             if (!known)
-                throw error(it->first, prefix + key,
-                            "unknown key '" + key + "'" + didYouMean(key, allowed));
+                throw SpecError(whereKey(map, it->first), prefix + key,
+                                "unknown key '" + key + "'" + didYouMean(key, allowed));
         }
     }
 
@@ -262,9 +281,9 @@ private:
             requireMap(n, "bodies");
             BodySpec b;
             b.where = where(n);
-            checkKeys(n, "", {"name", "inertia", "mass", "joint", "initial_angle", "initial_speed"});
-            b.name = scalar(required(n, "name", ""), "name");
+            b.name = scalar(required(n, "name", "bodies."), "name");
             const std::string prefix = b.name + ".";
+            checkKeys(n, prefix, {"name", "inertia", "mass", "joint", "initial_angle", "initial_speed"});
             if (b.name == "ground") throw error(n["name"], "name", "'ground' is reserved for the fixed frame");
             if (spec.findBody(b.name)) throw error(n["name"], "name", "a body named '" + b.name + "' exists already");
             const YAML::Node inertia = required(n, "inertia", prefix);
@@ -410,14 +429,19 @@ private:
                                     "no list item named '" + part + "' at this point of the path");
                 node.reset(found);  // operator= would copy found into the tree
             } else if (node.IsMap()) {
-                if (!node[part])
-                    throw SpecError({"<" + label + ">", 1, 1}, o.path,
-                                    "no key '" + part + "' at this point of the path");
+                if (!node[part]) {
+                    // An optional section the file leaves out (integrator:,
+                    // outputs:): create it; the reader then checks its keys.
+                    node[part] = YAML::Node(YAML::NodeType::Map);
+                    m_addedKeys.push_back({node, part, label});
+                    m_overridden.emplace_back(node[part], label);
+                }
                 const YAML::Node child = node[part];
                 node.reset(child);
             } else {
                 throw SpecError({"<" + label + ">", 1, 1}, o.path,
-                                "'" + part + "' is a single value, the path goes no deeper");
+                                "'" + (i > 0 ? parts[i - 1] : part) +
+                                    "' is a single value, the path goes no deeper");
             }
         }
         if (!node.IsMap())
@@ -425,6 +449,7 @@ private:
         const std::string& last = parts.back();
         if (node[last] && !node[last].IsScalar() && !node[last].IsNull())
             throw SpecError({"<" + label + ">", 1, 1}, o.path, "--set replaces single values only");
+        if (!node[last]) m_addedKeys.push_back({node, last, label});
         node[last] = o.value;
         m_overridden.emplace_back(node[last], label);
     }
@@ -449,11 +474,17 @@ ModelSpec readModelText(const std::string& text, const std::string& displayName,
 
 ModelSpec readModelFile(const std::string& path, const ModelFileReader& reader,
                         const std::vector<Override>& overrides) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw SpecError({path, 1, 1}, "<file>", "is a directory, not a model file");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw SpecError({path, 0, 0}, "", "cannot open the model file");
+    if (!in)
+        throw SpecError({path, 1, 1}, "<file>",
+                        std::filesystem::exists(path, ec) ? "cannot open the model file (permission denied?)"
+                                                          : "cannot open the model file: no such file");
     std::ostringstream text;
     text << in.rdbuf();
-    if (in.bad()) throw SpecError({path, 0, 0}, "", "cannot read the model file");
+    if (in.bad()) throw SpecError({path, 1, 1}, "<file>", "cannot read the model file");
     return readModelText(text.str(), path, reader, overrides);
 }
 

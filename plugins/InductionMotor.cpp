@@ -19,15 +19,18 @@ namespace {
 InductionMotor::InductionMotor(const SimTK::GeneralForceSubsystem& forces,
                                const SimTK::MobilizedBody& shaft, const InductionMotorParams& p)
     : m_forces(forces), m_shaft(shaft), m_params(p) {
-    if (!(p.ratedTorque > 0)) badParameter("rated_torque", p.ratedTorque, "must be > 0");
-    if (!(p.synchronousSpeed > 0))
-        badParameter("synchronous_speed", p.synchronousSpeed, "must be > 0");
+    auto finite = [](double v) { return std::isfinite(v); };
+    if (!(finite(p.ratedTorque) && p.ratedTorque > 0)) badParameter("rated_torque", p.ratedTorque, "must be finite and > 0");
+    if (!(finite(p.synchronousSpeed) && p.synchronousSpeed > 0))
+        badParameter("synchronous_speed", p.synchronousSpeed, "must be finite and > 0");
     if (!(p.ratedSpeed > 0 && p.ratedSpeed < p.synchronousSpeed))
         badParameter("rated_speed", p.ratedSpeed, "must lie in (0, synchronous_speed)");
+    if (!finite(p.breakdownRatio)) badParameter("breakdown_ratio", p.breakdownRatio, "must be finite");
     if (p.law == InductionMotorParams::Law::Kloss && !(p.breakdownRatio > 1))
-        badParameter("breakdown_ratio", p.breakdownRatio, "must be > 1");
-    if (p.linearStallTorque < 0) badParameter("linear_stall_torque", p.linearStallTorque, "must be >= 0");
-    if (p.linearSlope < 0) badParameter("linear_slope", p.linearSlope, "must be >= 0");
+        badParameter("breakdown_ratio", p.breakdownRatio, "must be > 1 for the Kloss law");
+    if (!(finite(p.linearStallTorque) && p.linearStallTorque >= 0))
+        badParameter("linear_stall_torque", p.linearStallTorque, "must be finite and >= 0");
+    if (!(finite(p.linearSlope) && p.linearSlope >= 0)) badParameter("linear_slope", p.linearSlope, "must be finite and >= 0");
     if (std::isnan(p.switchOffTime)) badParameter("switch_off_time", p.switchOffTime, "is NaN");
 
     const double slipSpeed = p.synchronousSpeed - p.ratedSpeed;

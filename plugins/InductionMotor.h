@@ -39,7 +39,8 @@ struct InductionMotorParams {
  *   Kloss curve (start from rest):
  *     s = (ωc − ω)/ωc,  sn = (ωc − ωn)/ωc,  sk = sn·(λ + √(λ² − 1)),
  *     M(ω) = 2·Mk·s·sk/(s² + sk²),  Mk = λ·Mn        (M(ωn) = Mn exactly)
- *   Switched off (t ≥ switchOffTime): M = 0.
+ *   Switched off: M = 0 (setOn(state, false); the registry's builder
+ *   schedules that as a Scene switch event at switch_off_time).
  * </pre>
  *
  * The shaft gets +M as a mobility force about its pin axis; the reaction on

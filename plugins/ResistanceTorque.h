@@ -46,7 +46,7 @@ struct ResistanceTorqueParams {
  * A Coulomb-like constant torque has no value at ω = 0; tanh(ω/ωs) makes it
  * smooth, so the shaft comes to rest instead of reversing (|ω| ≪ ωs: the
  * torque is a stiff viscous one, M0/ωs). Away from standstill (ω > 10·ωs)
- * the difference from the constant is below 2e-9·M0. Dissipative, never a
+ * the difference from the constant is below 2·e^(−20)·M0 ≈ 4.2e-9·M0. Dissipative, never a
  * source; potential energy is 0. With M0 = 0 it reduces to a linear
  * viscous damper to ground (Simbody's Force::MobilityLinearDamper), which
  * ResistanceTorqueTest checks.

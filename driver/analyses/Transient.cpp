@@ -58,7 +58,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
 
     scene->system().realize(steady, SimTK::Stage::Acceleration);
     const double omega = pinSpeed(steady, speedBody.mobod);
-    const std::string at = std::isfinite(switchTime) ? "just before switch-off" : "at the end of the run";
+    const bool switched = switchTime < endTime;
+    const std::string at = switched ? "just before switch-off" : "at the end of the run";
     result.results.push_back({"steady_speed", omega, "rad/s", "speed of " + speedBody.name + " " + at});
     result.results.push_back({"resistance_torque", sumProbes(*scene, steady, ProbeRole::ResistanceTorque), "N*m",
                               "sum of load torques " + at});
