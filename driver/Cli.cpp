@@ -107,11 +107,8 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
         if (!std::isfinite(r.value))
             throw AnalysisError("result " + r.name + " is not finite (the analysis diverged)");
 
-    const std::string csv = a.outDir + "/timeseries.csv";
-    writeFileAtomically(csv, formatTimeseriesCsv(result));
-    writeFileAtomically(a.outDir + "/summary.json", formatSummaryJson(spec, result, info));
     std::string warning;
-    const auto plots = spec.outputs.plots ? writePlots(a.outDir, csv, result, warning) : std::vector<std::string>{};
+    const auto files = writeResultFiles(a.outDir, spec, result, info, warning);
     if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
 
     if (a.quiet) return 0;
@@ -119,11 +116,13 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     for (const auto& r : result.results)
         out << "  " << std::left << std::setw(24) << r.name << describeValue(r.value, r.unit) << "\n";
     for (const auto& n : result.notes) out << "  note: " << n << "\n";
-    out << "  integrator " << result.statistics.integrator << ", accuracy " << result.statistics.accuracy
-        << ", " << result.statistics.steps << " steps, " << result.statistics.realizations
-        << " realizations, " << std::setprecision(3) << info.wallSeconds << " s wall\n";
-    out << "  wrote " << csv << ", " << a.outDir << "/summary.json";
-    for (const auto& p : plots) out << ", " << p;
+    if (result.statistics.steps > 0)
+        out << "  integrator " << result.statistics.integrator << ", accuracy " << result.statistics.accuracy
+            << ", " << result.statistics.steps << " steps, " << result.statistics.realizations << " realizations, ";
+    else
+        out << "  ";
+    out << std::setprecision(3) << info.wallSeconds << " s wall\n  wrote";
+    for (std::size_t i = 0; i < files.size(); ++i) out << (i ? ", " : " ") << files[i];
     out << "\n";
     return 0;
 }

@@ -4,6 +4,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -71,7 +72,7 @@ public:
 
         ModelSpec spec;
         spec.file = m_file;
-        checkKeys(root, "", {"format_version", "name", "description", "bodies", "elements",
+        checkKeys(root, "", {"format_version", "name", "description", "fidelity", "bodies", "elements",
                              "scenario", "integrator", "outputs"});
         const YAML::Node version = required(root, "format_version", "");
         const double versionNumber = readNumber(version, "format_version", "1");
@@ -87,9 +88,11 @@ public:
         spec.name = scalar(required(root, "name", ""), "name");
         if (root["description"]) spec.description = scalar(root["description"], "description");
 
+        if (root["fidelity"]) readFidelity(root["fidelity"], spec);
         readBodies(required(root, "bodies", ""), spec);
         if (root["elements"]) readElements(root["elements"], spec);
         readScenario(required(root, "scenario", ""), spec);
+        if (!spec.fidelity.empty()) keepSelectedFidelity(spec);
         if (root["integrator"]) readIntegrator(root["integrator"], spec.integrator);
         if (root["outputs"]) readOutputs(root["outputs"], spec.outputs);
         return spec;
@@ -257,6 +260,22 @@ private:
                         requireBody(n[i], key, v.names.back(), model);
                     }
                     break;
+                case ParamKind::BodyList:
+                    requireList(n, key);
+                    requireCount(n, key, p);
+                    for (std::size_t i = 0; i < n.size(); ++i) {
+                        v.names.push_back(scalar(n[i], key));
+                        requireBody(n[i], key, v.names.back(), model);
+                    }
+                    break;
+                case ParamKind::QuantityList:
+                    requireList(n, key);
+                    requireCount(n, key, p);
+                    for (std::size_t i = 0; i < n.size(); ++i) {
+                        v.numbers.push_back(readNumber(n[i], key, p.unit));
+                        checkRange(n[i], key, p, v.numbers.back());
+                    }
+                    break;
                 case ParamKind::Text:
                     v.text = scalar(n, key);
                     break;
@@ -266,12 +285,95 @@ private:
         if (schema.crossCheck) schema.crossCheck(out);
     }
 
+    void requireCount(const YAML::Node& n, const std::string& key, const ParamSchema& p) const {
+        if (n.size() < p.minCount || n.size() > p.maxCount)
+            throw error(n, key, "expected " + std::to_string(p.minCount) + " to " + std::to_string(p.maxCount) +
+                                    " items, got " + std::to_string(n.size()));
+    }
+
     void requireBody(const YAML::Node& n, const std::string& key, const std::string& bodyName,
                      const ModelSpec& model) const {
         if (model.findBody(bodyName)) return;
         std::vector<std::string> names;
         for (const auto& b : model.bodies) names.push_back(b.name);
         throw error(n, key, "no body named '" + bodyName + "'" + didYouMean(bodyName, names));
+    }
+
+    void readFidelity(const YAML::Node& n, ModelSpec& spec) const {
+        requireMap(n, "fidelity");
+        checkKeys(n, "fidelity.", {"level", "levels"});
+        const YAML::Node levels = required(n, "levels", "fidelity.");
+        requireList(levels, "fidelity.levels");
+        if (levels.size() == 0) throw error(levels, "fidelity.levels", "expected at least one level");
+        for (const auto& l : levels) spec.fidelityLevels.push_back(scalar(l, "fidelity.levels"));
+        const YAML::Node level = required(n, "level", "fidelity.");
+        spec.fidelity = scalar(level, "fidelity.level");
+        checkLevel(level, "fidelity.level", spec.fidelity, spec);
+    }
+
+    void checkLevel(const YAML::Node& n, const std::string& key, const std::string& level, const ModelSpec& spec) const {
+        if (std::find(spec.fidelityLevels.begin(), spec.fidelityLevels.end(), level) == spec.fidelityLevels.end())
+            throw error(n, key, "unknown fidelity level '" + level + "' (expected one of " +
+                                    joinWords(spec.fidelityLevels) + ")" + didYouMean(level, spec.fidelityLevels));
+    }
+
+    /// `fidelity: [2-mass]` on a body or element: the levels it belongs to.
+    std::vector<std::string> readMemberLevels(const YAML::Node& item, const std::string& prefix,
+                                              const ModelSpec& spec) const {
+        std::vector<std::string> levels;
+        const YAML::Node n = item["fidelity"];
+        if (!n) return levels;
+        if (spec.fidelityLevels.empty())
+            throw error(n, prefix + "fidelity", "the model declares no fidelity levels (top-level 'fidelity:')");
+        requireList(n, prefix + "fidelity");
+        for (const auto& l : n) {
+            levels.push_back(scalar(l, prefix + "fidelity"));
+            checkLevel(l, prefix + "fidelity", levels.back(), spec);
+        }
+        return levels;
+    }
+
+    static bool sharesLevel(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+        if (a.empty() || b.empty()) return true;
+        for (const auto& x : a)
+            if (std::find(b.begin(), b.end(), x) != b.end()) return true;
+        return false;
+    }
+
+    /// Drops bodies and elements of other levels, then checks that nothing
+    /// kept refers to something dropped.
+    void keepSelectedFidelity(ModelSpec& spec) const {
+        auto kept = [&](const std::vector<std::string>& levels) {
+            return levels.empty() || std::find(levels.begin(), levels.end(), spec.fidelity) != levels.end();
+        };
+        std::vector<BodySpec> bodies;
+        for (const auto& b : spec.bodies)
+            if (kept(b.fidelity)) bodies.push_back(b);
+        std::vector<ElementSpec> elements;
+        for (const auto& e : spec.elements)
+            if (kept(e.fidelity)) elements.push_back(e);
+        spec.bodies = bodies;
+        spec.elements = elements;
+        const std::string why = "' is not part of fidelity level '" + spec.fidelity + "'";
+        for (const auto& b : spec.bodies)
+            if (b.joint.parent != "ground" && !spec.findBody(b.joint.parent))
+                throw SpecError(b.joint.where, b.name + ".joint.parent", "body '" + b.joint.parent + why);
+        if (spec.bodies.empty())
+            throw SpecError({m_file, 1, 1}, "fidelity.level", "no body belongs to level '" + spec.fidelity + "'");
+        auto checkRefs = [&](const ElementSpec& e, const std::string& prefix) {
+            for (const auto& kv : e.params) {
+                std::vector<std::string> refs = kv.second.names;
+                const ElementSchema* schema = prefix == "scenario." ? m_lookups.analysisSchema(e.type)
+                                                                    : m_lookups.elementSchema(e.type);
+                const ParamSchema* p = schema ? schema->find(kv.first) : nullptr;
+                if (p && p->kind == ParamKind::BodyRef && !kv.second.text.empty()) refs.push_back(kv.second.text);
+                for (const auto& r : refs)
+                    if (!spec.findBody(r))
+                        throw SpecError(kv.second.where, prefix + kv.first, "body '" + r + why);
+            }
+        };
+        for (const auto& e : spec.elements) checkRefs(e, e.name + ".");
+        checkRefs(spec.scenario, "scenario.");
     }
 
     void readBodies(const YAML::Node& list, ModelSpec& spec) const {
@@ -283,7 +385,8 @@ private:
             b.where = where(n);
             b.name = scalar(required(n, "name", "bodies."), "name");
             const std::string prefix = b.name + ".";
-            checkKeys(n, prefix, {"name", "inertia", "mass", "joint", "initial_angle", "initial_speed"});
+            checkKeys(n, prefix, {"name", "inertia", "mass", "joint", "initial_angle", "initial_speed", "fidelity"});
+            b.fidelity = readMemberLevels(n, prefix, spec);
             if (b.name == "ground") throw error(n["name"], "name", "'ground' is reserved for the fixed frame");
             if (spec.findBody(b.name)) throw error(n["name"], "name", "a body named '" + b.name + "' exists already");
             const YAML::Node inertia = required(n, "inertia", prefix);
@@ -335,13 +438,17 @@ private:
             e.type = scalar(type, "type");
             const YAML::Node nameNode = required(n, "name", e.type + ".");
             e.name = scalar(nameNode, "name");
-            if (spec.findElement(e.name))
-                throw error(nameNode, "name", "an element named '" + e.name + "' exists already");
+            e.fidelity = readMemberLevels(n, e.name + ".", spec);
+            // Names are unique within each fidelity level: two elements of
+            // disjoint levels (the 2-mass and 10-mass load) may share one.
+            for (const auto& other : spec.elements)
+                if (other.name == e.name && sharesLevel(other.fidelity, e.fidelity))
+                    throw error(nameNode, "name", "an element named '" + e.name + "' exists already");
             const ElementSchema* schema = m_lookups.elementSchema(e.type);
             if (!schema)
                 throw error(type, e.name + ".type",
                             "unknown element type '" + e.type + "'" + didYouMean(e.type, m_lookups.elementTypes));
-            readParams(n, *schema, e.name + ".", {"type", "name"}, spec, e);
+            readParams(n, *schema, e.name + ".", {"type", "name", "fidelity"}, spec, e);
             spec.elements.push_back(e);
         }
     }

@@ -32,6 +32,8 @@ struct BodySpec {
     JointSpec joint;
     double initialAngle = 0;  ///< [rad]
     double initialSpeed = 0;  ///< [rad/s]
+    /// Fidelity levels this body belongs to (empty: all).
+    std::vector<std::string> fidelity;
     SourceLocation where;
 };
 
@@ -53,6 +55,10 @@ struct ModelSpec {
     int formatVersion = kModelFormatVersion;
     std::string name;
     std::string description;
+    /// The model's fidelity levels (e.g. 2-mass, 10-mass) and the one built;
+    /// bodies and elements of other levels are read, checked and dropped.
+    std::vector<std::string> fidelityLevels;
+    std::string fidelity;
     std::vector<BodySpec> bodies;
     std::vector<ElementSpec> elements;
     /// The analysis: `type` is its kind ("transient", ...), params its keys.

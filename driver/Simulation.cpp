@@ -225,6 +225,9 @@ SimTK::State Simulation::locateCrossing(const SimTK::State& before, double tAfte
 SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
     const SimTK::System& system = scene.system();
     SimTK::State state = guess;
+    // Steady running is about the mean load: periodic excitations off while
+    // solving, back on in the state returned.
+    scene.setExcitationsOn(state, false);
     const int nq = state.getNQ(), nu = state.getNU();
     const auto hints = scene.speedHints();
     for (const auto& b : scene.bodies()) b.mobod.setOneU(state, SimTK::MobilizerUIndex(0), hints.at(b.name));
@@ -287,6 +290,8 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
         throw AnalysisError("no steady running state found: residual " + std::to_string(r.cwiseAbs().maxCoeff()) +
                             " in " + where + " (does the drive overcome the load?)");
     }
+    scene.setExcitationsOn(state, true);
+    system.realize(state, SimTK::Stage::Acceleration);
     return state;
 }
 

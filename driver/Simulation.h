@@ -81,10 +81,11 @@ private:
     SimTK::State locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch);
 };
 
-/// Solves for steady running: all accelerations zero and every steady
-/// residual of the scene (coupling twist rates) zero, the first body's angle
-/// held. Starts from the scene's speed hints. Returns a state realized to
-/// Acceleration. Throws AnalysisError naming the largest residual if it does
+/// Solves for steady running about the mean load (periodic excitations off
+/// while solving): all accelerations zero and every steady residual of the
+/// scene (coupling twist rates) zero, the first body's angle held. Starts
+/// from the scene's speed hints. Returns the state with the excitations on,
+/// realized to Acceleration. Throws AnalysisError naming the largest residual if it does
 /// not converge.
 SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess);
 

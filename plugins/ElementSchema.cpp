@@ -34,6 +34,12 @@ const std::vector<std::string>& ElementSpec::names(const std::string& key) const
     return it->second.names;
 }
 
+const std::vector<double>& ElementSpec::numbers(const std::string& key) const {
+    auto it = params.find(key);
+    if (it == params.end()) throw error(key, "missing required key");
+    return it->second.numbers;
+}
+
 bool ElementSpec::has(const std::string& key) const {
     auto it = params.find(key);
     return it != params.end() && it->second.given;
@@ -71,6 +77,23 @@ ParamSchema ParamSchema::choice(std::string key, std::vector<std::string> choice
     p.kind = ParamKind::Choice;
     p.choices = std::move(choices);
     p.doc = std::move(doc);
+    return p;
+}
+
+ParamSchema ParamSchema::bodyList(std::string key, std::size_t minCount, std::size_t maxCount, std::string doc) {
+    ParamSchema p = body(std::move(key), std::move(doc));
+    p.kind = ParamKind::BodyList;
+    p.minCount = minCount;
+    p.maxCount = maxCount;
+    return p;
+}
+
+ParamSchema ParamSchema::quantityList(std::string key, std::string unit, std::size_t minCount, std::size_t maxCount,
+                                      std::string doc) {
+    ParamSchema p = quantity(std::move(key), std::move(unit), std::move(doc));
+    p.kind = ParamKind::QuantityList;
+    p.minCount = minCount;
+    p.maxCount = maxCount;
     return p;
 }
 

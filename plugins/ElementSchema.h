@@ -42,6 +42,8 @@ enum class ParamKind {
     Choice,     ///< one word out of a fixed list
     BodyRef,    ///< the name of a body in the model
     BodyPair,   ///< a list of two body names [from, to]
+    BodyList,   ///< a list of body names (minCount..maxCount)
+    QuantityList,  ///< a list of numbers with units, all in `unit`
     Text,       ///< free text (names, descriptions)
 };
 
@@ -58,6 +60,8 @@ struct ParamSchema {
     bool minExclusive = false;
     std::optional<double> max;          ///< Quantity upper bound
     bool maxExclusive = false;
+    std::size_t minCount = 0;           ///< lists: fewest items
+    std::size_t maxCount = 1000;        ///< lists: most items
     std::string doc;                    ///< one line for docs and `info`
 
     // Readable declarations: quantity("stiffness", "N*m/rad", "...").atLeast(0)
@@ -66,6 +70,9 @@ struct ParamSchema {
     static ParamSchema body(std::string key, std::string doc);
     static ParamSchema bodyPair(std::string key, std::string doc);
     static ParamSchema text(std::string key, std::string doc);
+    static ParamSchema bodyList(std::string key, std::size_t minCount, std::size_t maxCount, std::string doc);
+    static ParamSchema quantityList(std::string key, std::string unit, std::size_t minCount, std::size_t maxCount,
+                                    std::string doc);
     ParamSchema& optional(double defaultSI);
     ParamSchema& optional(std::string defaultWord);
     ParamSchema& above(double bound);    ///< value > bound
@@ -78,7 +85,8 @@ struct ParamSchema {
 struct ParamValue {
     double number = 0;                  ///< Quantity, SI
     std::string text;                   ///< Choice, BodyRef, Text
-    std::vector<std::string> names;     ///< BodyPair
+    std::vector<std::string> names;     ///< BodyPair, BodyList
+    std::vector<double> numbers;        ///< QuantityList, SI
     SourceLocation where;
     bool given = false;                 ///< false: filled from the default
 };
@@ -89,11 +97,14 @@ struct ElementSpec {
     std::string name;
     SourceLocation where;
     std::map<std::string, ParamValue> params;
+    /// Fidelity levels this element belongs to (empty: all).
+    std::vector<std::string> fidelity;
 
     /// Quantity in SI; throws SpecError if absent.
     double number(const std::string& key) const;
     const std::string& text(const std::string& key) const;
     const std::vector<std::string>& names(const std::string& key) const;
+    const std::vector<double>& numbers(const std::string& key) const;
     bool has(const std::string& key) const;
     /// The location of a key (the element's own if the key was defaulted).
     SourceLocation whereOf(const std::string& key) const;

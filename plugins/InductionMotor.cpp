@@ -97,7 +97,7 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
 
     auto* impl = new InductionMotor(scene.forces(), shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);  // Simbody owns impl
-    scene.addForce(spec.name, spec.type, force.getForceIndex());
+    scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     scene.addSwitchable(spec.name, [impl](SimTK::State& s, bool on) { impl->setOn(s, on); });
     if (std::isfinite(p.switchOffTime))
         scene.addSwitchEvent({Scene::SwitchEvent::Kind::DriveOff, p.switchOffTime, spec.name + " switched off",

@@ -79,7 +79,7 @@ void buildResistanceTorque(const ElementSpec& spec, Scene& scene) {
     p.feedStartTime = spec.number("feed_start_time");
     auto* impl = new ResistanceTorque(scene.forces(), shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);
-    scene.addForce(spec.name, spec.type, force.getForceIndex());
+    scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     const SimTK::MobilizedBody mobod = shaft->mobod;
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, SimTK::Stage::Velocity,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});

@@ -16,14 +16,15 @@ const SceneBody* Scene::findBody(const std::string& name) const {
     return nullptr;
 }
 
-void Scene::addForce(const std::string& name, const std::string& type, SimTK::ForceIndex index) {
-    m_forceIndex[name] = {type, index};
+void Scene::addForce(const std::string& name, const std::string& type, SimTK::ForceIndex index,
+                     const SimTK::Force::Custom::Implementation* impl) {
+    m_forceIndex[name] = {type, index, impl};
 }
 
 SimTK::ForceIndex Scene::findForce(const std::string& name) const {
     auto it = m_forceIndex.find(name);
     if (it == m_forceIndex.end()) return SimTK::ForceIndex();
-    return it->second.second;
+    return it->second.index;
 }
 
 void Scene::addSwitchable(const std::string& name, std::function<void(SimTK::State&, bool)> setOn) {
@@ -32,6 +33,14 @@ void Scene::addSwitchable(const std::string& name, std::function<void(SimTK::Sta
 
 void Scene::setDrivesOn(SimTK::State& state, bool on) const {
     for (const auto& s : m_switchables) s.second(state, on);
+}
+
+void Scene::addExcitation(const std::string& name, std::function<void(SimTK::State&, bool)> setOn) {
+    m_excitations.emplace_back(name, std::move(setOn));
+}
+
+void Scene::setExcitationsOn(SimTK::State& state, bool on) const {
+    for (const auto& e : m_excitations) e.second(state, on);
 }
 
 void Scene::addSpeedRelation(const std::string& from, const std::string& to, double ratio) {

@@ -77,9 +77,17 @@ public:
     void addSteadyResidual(SteadyResidual r) { m_steadyResiduals.push_back(std::move(r)); }
     const std::vector<SteadyResidual>& steadyResiduals() const { return m_steadyResiduals; }
 
-    /// Force elements by name, for analyses that need the handle.
-    void addForce(const std::string& name, const std::string& type, SimTK::ForceIndex index);
+    /// Force elements by name, for analyses that need the handle or the
+    /// element itself (Simbody owns `impl`; it lives as long as the system).
+    void addForce(const std::string& name, const std::string& type, SimTK::ForceIndex index,
+                  const SimTK::Force::Custom::Implementation* impl);
     SimTK::ForceIndex findForce(const std::string& name) const;
+    /// The element named `name` if it is a T, else nullptr.
+    template <class T>
+    const T* findElement(const std::string& name) const {
+        auto it = m_forceIndex.find(name);
+        return it == m_forceIndex.end() ? nullptr : dynamic_cast<const T*>(it->second.impl);
+    }
 
     /// Scheduled switchings (a motor switched off): the integrator stops
     /// exactly at `time`, `apply` changes the state, integration restarts.
@@ -108,6 +116,12 @@ public:
     /// Switches every registered drive on or off in `state`.
     void setDrivesOn(SimTK::State& state, bool on) const;
 
+    /// Time-periodic excitations (crushing loads) that the steady-state
+    /// solver and the linearization switch off, so they work about the mean.
+    void addExcitation(const std::string& name, std::function<void(SimTK::State&, bool)> setOn);
+    /// Switches every registered excitation on or off in `state`.
+    void setExcitationsOn(SimTK::State& state, bool on) const;
+
     void note(const std::string& what, const std::string& why) { m_notes.push_back({what, why}); }
     const std::vector<BuildNote>& notes() const { return m_notes; }
 
@@ -118,13 +132,19 @@ private:
     std::vector<SceneBody> m_bodies;
     std::vector<Probe> m_probes;
     std::vector<SteadyResidual> m_steadyResiduals;
-    std::map<std::string, std::pair<std::string, SimTK::ForceIndex>> m_forceIndex;
+    struct ForceEntry {
+        std::string type;
+        SimTK::ForceIndex index;
+        const SimTK::Force::Custom::Implementation* impl;
+    };
+    std::map<std::string, ForceEntry> m_forceIndex;
     std::vector<SwitchEvent> m_switchEvents;
     std::map<std::string, double> m_speedHints;
     struct SpeedRelation { std::string from, to; double ratio; };
     std::vector<SpeedRelation> m_speedRelations;
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_switchables;
     std::vector<BuildNote> m_notes;
+    std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_excitations;
 };
 
 /// The angular speed of a pin-jointed body about its axis [rad/s].

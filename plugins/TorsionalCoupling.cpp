@@ -62,7 +62,7 @@ void buildTorsionalCoupling(const ElementSpec& spec, Scene& scene) {
     p.ratio = spec.number("ratio");
     auto* impl = new TorsionalCoupling(from->mobod, to->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);
-    scene.addForce(spec.name, spec.type, force.getForceIndex());
+    scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::CouplingTorque, SimTK::Stage::Velocity,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
     scene.addProbe({spec.name + ".twist", "rad", ProbeRole::Generic, SimTK::Stage::Position,

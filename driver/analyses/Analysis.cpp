@@ -3,6 +3,7 @@
 #include "driver/ModelFile.h"
 #include "plugins/ElementRegistry.h"
 
+#include <cmath>
 #include <limits>
 #include <map>
 
@@ -61,6 +62,45 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
             .optional(0.1).above(0),
     };
     schemas["coastdown_identify"] = identify;
+
+    ElementSchema linearize;
+    linearize.type = "linearize";
+    linearize.doc = "Mass, damping and stiffness matrices about steady running (numerical Jacobians), "
+                    "eigenvalues, natural frequencies and mode shapes.";
+    linearize.params = {
+        P::choice("operating_point", {"steady", "file"},
+                  "steady: solved steady running about the mean load; file: the bodies' initial_* keys")
+            .optional("steady"),
+    };
+    schemas["linearize"] = linearize;
+
+    ElementSchema response;
+    response.type = "frequency_response";
+    response.doc = "Steady-state amplitude and phase of every coupling torque under one harmonic of a "
+                   "PeriodicLoad, from the linear model, over a frequency range; optionally checked by "
+                   "time simulation at chosen frequencies.";
+    response.params = {
+        P::text("load", "name of the PeriodicLoad element whose row pattern is the forcing"),
+        P::quantity("harmonic", "1", "harmonic k of the load (its row phases are k·φ_r)").optional(1.0).above(0)
+            .atMost(1000),
+        P::quantity("frequency_min", "rad/s", "lowest forcing frequency").above(0),
+        P::quantity("frequency_max", "rad/s", "highest forcing frequency").above(0),
+        P::quantity("points", "1", "frequencies, log-spaced").optional(200.0).atLeast(2).atMost(100000),
+        P::quantityList("check_frequencies", "rad/s", 0, 20,
+                        "frequencies at which a time simulation checks the linear response")
+            .optional(0.0)
+            .above(0),
+        P::quantity("check_periods", "1", "forcing periods fitted in each time check").optional(20.0).atLeast(1),
+        P::quantity("settle_time", "s", "time for transients to decay before fitting (0: from the slowest "
+                                         "eigenvalue)").optional(0.0).atLeast(0),
+    };
+    response.crossCheck = [](const ElementSpec& e) {
+        if (e.number("frequency_max") <= e.number("frequency_min"))
+            throw e.error("frequency_max", "must exceed frequency_min");
+        if (e.number("harmonic") != std::floor(e.number("harmonic")))
+            throw e.error("harmonic", "must be a whole number");
+    };
+    schemas["frequency_response"] = response;
     return schemas;
 }
 
@@ -105,6 +145,8 @@ AnalysisResult runModelFile(const std::string& path, const std::vector<Override>
 AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
     if (spec.scenario.type == "transient") return runTransient(spec, progress);
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
+    if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
+    if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
     throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");
 }
 

@@ -19,9 +19,26 @@ struct ResultScalar {
     std::string doc;
 };
 
+/// A further table an analysis writes as NAME.csv.
+struct DataTable {
+    std::string name;
+    std::vector<std::string> columnNames;
+    std::vector<std::string> columnUnits;
+    std::vector<std::vector<double>> rows;
+};
+
+/// A matrix an analysis reports (linear_model.json).
+struct NamedMatrix {
+    std::string name;
+    std::string unit;
+    std::vector<std::vector<double>> rows;
+};
+
 struct AnalysisResult {
     std::string analysis;
-    /// The time series: column i is names[i] in units[i]; rows of values.
+    /// The main table, written as TABLENAME.csv (plots read it): column i is
+    /// columnNames[i] in columnUnits[i].
+    std::string tableName = "timeseries";
     std::vector<std::string> columnNames;
     std::vector<std::string> columnUnits;
     std::vector<std::vector<double>> rows;
@@ -30,6 +47,12 @@ struct AnalysisResult {
     RunStatistics statistics;
     /// The columns worth a plot (indices into columnNames) and their titles.
     std::vector<std::pair<std::string, std::vector<std::size_t>>> plots;
+    /// The quantity on the plots' x axis (column 0 of the main table).
+    std::string plotXLabel = "time [s]";
+    std::vector<DataTable> extraTables;
+    /// Degree-of-freedom names and matrices (linear models), if any.
+    std::vector<std::string> dofNames;
+    std::vector<NamedMatrix> matrices;
 
     const ResultScalar* find(const std::string& name) const;
 };
@@ -54,6 +77,8 @@ AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress = {
 // The analyses themselves (one file each).
 AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& progress);
 
 /// Sum of every probe with this role in this state.
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);

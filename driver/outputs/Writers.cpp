@@ -17,12 +17,12 @@ std::string formatDouble(double v) {
     return std::string(buf, r.ptr);
 }
 
-std::string formatTimeseriesCsv(const AnalysisResult& result) {
+std::string formatCsv(const std::vector<std::string>& names, const std::vector<std::string>& units,
+                      const std::vector<std::vector<double>>& rows) {
     std::string out;
-    for (std::size_t i = 0; i < result.columnNames.size(); ++i)
-        out += (i ? "," : "") + result.columnNames[i] + "[" + result.columnUnits[i] + "]";
+    for (std::size_t i = 0; i < names.size(); ++i) out += (i ? "," : "") + names[i] + "[" + units[i] + "]";
     out += '\n';
-    for (const auto& row : result.rows) {
+    for (const auto& row : rows) {
         for (std::size_t i = 0; i < row.size(); ++i) {
             if (i) out += ',';
             out += formatDouble(row[i]);
@@ -48,9 +48,44 @@ std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& resul
                        {"step_attempts", result.statistics.stepAttempts},
                        {"realizations", result.statistics.realizations},
                        {"samples", result.rows.size()}};
+    j["tables"] = nlohmann::ordered_json::array();
+    j["tables"].push_back(result.tableName + ".csv");
+    for (const auto& t : result.extraTables) j["tables"].push_back(t.name + ".csv");
     j["run"] = {{"wall_time", info.wallSeconds}, {"wall_time_unit", "s"}, {"host", info.host},
                 {"milldyn_version", info.version}};
     return j.dump(2) + "\n";
+}
+
+std::string formatLinearModelJson(const AnalysisResult& result) {
+    nlohmann::ordered_json j;
+    j["dofs"] = result.dofNames;
+    j["equation"] = "M*q'' + C*q' + K*q = f, deviations from the operating point; A = [[0, I], [-M^-1 K, -M^-1 C]]";
+    for (const auto& m : result.matrices) j[m.name] = {{"unit", m.unit}, {"rows", m.rows}};
+    return j.dump(2) + "\n";
+}
+
+std::vector<std::string> writeResultFiles(const std::string& dir, const ModelSpec& spec,
+                                          const AnalysisResult& result, const RunInfo& info, std::string& warning) {
+    std::vector<std::string> written;
+    const std::string main = dir + "/" + result.tableName + ".csv";
+    writeFileAtomically(main, formatCsv(result.columnNames, result.columnUnits, result.rows));
+    written.push_back(main);
+    for (const auto& t : result.extraTables) {
+        const std::string path = dir + "/" + t.name + ".csv";
+        writeFileAtomically(path, formatCsv(t.columnNames, t.columnUnits, t.rows));
+        written.push_back(path);
+    }
+    if (!result.matrices.empty()) {
+        writeFileAtomically(dir + "/linear_model.json", formatLinearModelJson(result));
+        written.push_back(dir + "/linear_model.json");
+    }
+    writeFileAtomically(dir + "/summary.json", formatSummaryJson(spec, result, info));
+    written.push_back(dir + "/summary.json");
+    if (spec.outputs.plots) {
+        const auto plots = writePlots(dir, main, result, warning);
+        written.insert(written.end(), plots.begin(), plots.end());
+    }
+    return written;
 }
 
 namespace {
@@ -84,7 +119,8 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
         script << "set terminal pngcairo noenhanced size 1000,560 font 'DejaVu Sans,10'\n"
                << "set output " << quoteForGnuplot(tmpPng) << "\n"
                << "set datafile separator ','\nset key outside right\nset grid\n"
-               << "set xlabel 'time [s]'\nset ylabel " << quoteForGnuplot(plot.first + " [" +
+               << (result.plotXLabel.find("frequency") != std::string::npos ? "set logscale x\n" : "")
+               << "set xlabel " << quoteForGnuplot(result.plotXLabel) << "\nset ylabel " << quoteForGnuplot(plot.first + " [" +
                                                                             result.columnUnits[plot.second[0]] + "]")
                << "\nset title " << quoteForGnuplot(plot.first) << "\nplot ";
         for (std::size_t k = 0; k < plot.second.size(); ++k) {

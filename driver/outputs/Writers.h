@@ -18,7 +18,16 @@ struct RunInfo {
 };
 
 /// CSV with header `name[unit]`, numbers in shortest round-trip form.
-std::string formatTimeseriesCsv(const AnalysisResult& result);
+std::string formatCsv(const std::vector<std::string>& names, const std::vector<std::string>& units,
+                      const std::vector<std::vector<double>>& rows);
+/// linear_model.json: degree-of-freedom names and matrices.
+std::string formatLinearModelJson(const AnalysisResult& result);
+
+/// Writes every file of a result into `dir` (each atomically): the main
+/// table, extra tables, summary.json, linear_model.json, plots. Returns the
+/// paths written; `warning` says what could not be plotted.
+std::vector<std::string> writeResultFiles(const std::string& dir, const ModelSpec& spec,
+                                          const AnalysisResult& result, const RunInfo& info, std::string& warning);
 /// summary.json: model, results with units, settings, statistics, and a
 /// separate "run" section with wall time and host.
 std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& result, const RunInfo& info);

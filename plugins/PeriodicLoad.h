@@ -1,0 +1,84 @@
+#pragma once
+// PeriodicLoad: the crushing torque of sprocket rows, a mean plus a Fourier
+// series in time, with a phase per row.
+
+#include <Simbody.h>
+
+#include <vector>
+
+namespace milldyn {
+
+/// Parameters of a PeriodicLoad. All SI.
+struct PeriodicLoadParams {
+    /// Number of sprocket rows n >= 1 whose loads this element applies.
+    int rows = 1;
+    /// Mean crushing torque per row M̄ [N*m], >= 0, opposing rotation.
+    double meanTorque = 0;
+    /// Harmonic amplitudes per row b_1..b_K [N*m], each >= 0 (eq 27).
+    std::vector<double> amplitudes;
+    /// Fundamental frequency P_1 [rad/s], > 0; harmonic k has P_k = k·P_1.
+    double fundamentalFrequency = 0;
+    /// true: rows evenly staggered over one period of the fundamental
+    /// (φ_r = 2πr/n, eq 13); false: all rows in phase.
+    bool staggered = false;
+    /// Width ωs of the regularisation of the mean near standstill [rad/s], > 0.
+    double smoothingSpeed = 0.01;
+};
+
+/**
+ * Crushing torque of n sprocket rows on one or several pin-jointed shafts.
+ *
+ * <pre>
+ *   row r = 0..n−1:  M_r(t) = M̄·tanh(ω/ωs) + Σ_k b_k·sin(k·(P_1·t + φ_r))   (eqs 13, 27)
+ *   φ_r = 2π·r/n (staggered) or 0 (in phase)
+ *   body j gets −Σ_{rows r on j} M_r(t)
+ *   rows on bodies: n bodies → one row each; one body → all n rows on it
+ * </pre>
+ *
+ * Eq (13) writes the row loads as time shifts of one another,
+ * M_i(t) = M_2(t + φ_i); a shift by r/n of the fundamental period is the
+ * phase k·2πr/n of harmonic k. Evenly staggered rows on one rigid body sum
+ * to zero for every harmonic that is not a multiple of n — the 2-mass
+ * model's cancellation, which the chain does not share. The mean is
+ * smoothed at standstill like ResistanceTorque; the periodic part is a pure
+ * function of time (a tooth-passing load at constant speed, as the paper
+ * assumes). Not conservative; potential energy 0. With excitation off
+ * (setExcitationOn(false)) only the mean acts: the operating point of the
+ * steady-state solver and the linearization. Checked by PeriodicLoadTest
+ * and, through the crusher model, by validation/oracles/RollCrusherOracle.
+ */
+class PeriodicLoad : public SimTK::Force::Custom::Implementation {
+public:
+    /// `bodies` holds n bodies or one; throws std::invalid_argument naming
+    /// the parameter that is out of range.
+    PeriodicLoad(const SimTK::GeneralForceSubsystem& forces, std::vector<SimTK::MobilizedBody> bodies,
+                 const PeriodicLoadParams& params);
+
+    /// Fundamental phase φ_r of row r [rad].
+    double rowPhase(int row) const;
+    /// Periodic part of row r's torque at time t [N*m].
+    double periodicPart(int row, double t) const;
+    /// Total torque magnitude this element applies in this state [N*m].
+    double calcTotalTorque(const SimTK::State& state) const;
+    bool isExcitationOn(const SimTK::State& state) const;
+    void setExcitationOn(SimTK::State& state, bool on) const;
+    /// The body each row acts on (index into the bodies given).
+    int bodyOfRow(int row) const;
+    const PeriodicLoadParams& params() const { return m_params; }
+    const std::vector<SimTK::MobilizedBody>& bodies() const { return m_bodies; }
+
+    void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
+                   SimTK::Vector_<SimTK::Vec3>& particleForces, SimTK::Vector& mobilityForces) const override;
+    SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+    void realizeTopology(SimTK::State& state) const override;
+
+private:
+    double rowTorque(const SimTK::State& state, int row) const;
+
+    const SimTK::GeneralForceSubsystem& m_forces;
+    std::vector<SimTK::MobilizedBody> m_bodies;
+    PeriodicLoadParams m_params;
+    mutable SimTK::DiscreteVariableIndex m_excitationIndex;
+};
+
+}  // namespace milldyn
