@@ -557,6 +557,9 @@ private:
         if (node[last] && !node[last].IsScalar() && !node[last].IsNull())
             throw SpecError({"<" + label + ">", 1, 1}, o.path, "--set replaces single values only");
         if (!node[last]) m_addedKeys.push_back({node, last, label});
+        // Assigning into an existing node would write through YAML aliases
+        // (&x / *x) into every other use of the value: detach it first.
+        if (node[last]) node.remove(last);
         node[last] = o.value;
         m_overridden.emplace_back(node[last], label);
     }

@@ -61,6 +61,13 @@ double PeriodicLoad::calcTotalTorque(const SimTK::State& s) const {
     return sum;
 }
 
+double PeriodicLoad::calcAbsorbedPower(const SimTK::State& s) const {
+    double sum = 0;
+    for (int r = 0; r < m_params.rows; ++r)
+        sum += rowTorque(s, r) * m_bodies[bodyOfRow(r)].getOneU(s, SimTK::MobilizerUIndex(0));
+    return sum;
+}
+
 void PeriodicLoad::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                              SimTK::Vector& mobilityForces) const {
     for (int r = 0; r < m_params.rows; ++r)
@@ -90,6 +97,8 @@ void buildPeriodicLoad(const ElementSpec& spec, Scene& scene) {
     scene.addExcitation(spec.name, [impl](SimTK::State& s, bool on) { impl->setExcitationOn(s, on); });
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, SimTK::Stage::Velocity,
                     [impl](const SimTK::State& s) { return impl->calcTotalTorque(s); }});
+    scene.addProbe({spec.name + ".power", "W", ProbeRole::ResistancePower, SimTK::Stage::Velocity,
+                    [impl](const SimTK::State& s) { return impl->calcAbsorbedPower(s); }});
     scene.note("force " + spec.name + " (PeriodicLoad, " + std::to_string(p.rows) + " rows, " +
                    spec.text("arrangement") + ")",
                "loads " + std::to_string(bodies.size()) + " bod" + (bodies.size() == 1 ? "y" : "ies"));

@@ -20,7 +20,7 @@ struct PeriodicLoadParams {
     double fundamentalFrequency = 0;
     /// true: rows evenly staggered over one period of the fundamental
     /// (φ_r = 2πr/n, eq 13); false: all rows in phase.
-    bool staggered = false;
+    bool staggered = true;
     /// Width ωs of the regularisation of the mean near standstill [rad/s], > 0.
     double smoothingSpeed = 0.01;
 };
@@ -60,6 +60,8 @@ public:
     double periodicPart(int row, double t) const;
     /// Total torque magnitude this element applies in this state [N*m].
     double calcTotalTorque(const SimTK::State& state) const;
+    /// Power the rows absorb, Σ M_r·ω [W].
+    double calcAbsorbedPower(const SimTK::State& state) const;
     bool isExcitationOn(const SimTK::State& state) const;
     void setExcitationOn(SimTK::State& state, bool on) const;
     /// The body each row acts on (index into the bodies given).

@@ -111,6 +111,21 @@ const std::map<std::string, ElementSchema>& analysisSchemas() {
 
 }  // namespace
 
+ElementSpec defaultScenario(const std::string& kind) {
+    const ElementSchema* schema = findAnalysisSchema(kind);
+    if (!schema) throw std::invalid_argument("unknown analysis '" + kind + "'");
+    ElementSpec s;
+    s.type = kind;
+    s.name = "scenario";
+    for (const auto& p : schema->params) {
+        ParamValue v;
+        v.number = p.defaultValue.value_or(0.0);
+        v.text = p.defaultText;
+        s.params[p.key] = v;
+    }
+    return s;
+}
+
 const ElementSchema* findAnalysisSchema(const std::string& kind) {
     const auto& all = analysisSchemas();
     auto it = all.find(kind);

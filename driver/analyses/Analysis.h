@@ -64,6 +64,10 @@ ModelFileReader defaultModelReader();
 AnalysisResult runModelFile(const std::string& path, const std::vector<Override>& overrides,
                             ModelSpec* specOut = nullptr);
 
+/// A scenario of this kind with every key at its default (validation cases
+/// and tests build scenarios in code, then set the keys they need).
+ElementSpec defaultScenario(const std::string& kind);
+
 /// The keys each analysis kind accepts (for the model-file reader).
 const ElementSchema* findAnalysisSchema(const std::string& kind);
 std::vector<std::string> analysisKinds();

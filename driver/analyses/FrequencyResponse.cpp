@@ -168,7 +168,11 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
         const double fitTime = sc.number("check_periods") * period;
         // The settle time is rounded up to whole periods, so the fit spans whole periods.
         const double tFit = std::ceil(settle / period) * period;
-        Simulation sim(*checkScene, checkSpec.integrator);
+        // Samples are interpolated; a step of at most 1/50 period keeps the
+        // interpolant's error far below the integration accuracy.
+        IntegratorSpec integrator = checkSpec.integrator;
+        integrator.maxStep = integrator.maxStep > 0 ? std::min(integrator.maxStep, period / 50) : period / 50;
+        Simulation sim(*checkScene, integrator);
         sim.initialize(start);
         std::vector<double> ts;
         std::vector<std::vector<double>> ys(outputs.size());

@@ -35,13 +35,15 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
 
     // Summary at the last sample before the first switch-off: steady running.
     SimTK::State steady = state;
-    double peakDrive = 0, peakCoupling = 0;
+    double peakDrive = 0;
+    std::vector<double> peakCoupling(scene->probes().size(), 0.0);
     auto onSample = [&](const SimTK::State& s) {
         table.record(s);
         if (s.getTime() <= switchTime) steady = s;
         peakDrive = std::max(peakDrive, std::abs(sumProbes(*scene, s, ProbeRole::DriveTorque)));
-        for (const auto& p : scene->probes())
-            if (p.role == ProbeRole::CouplingTorque) peakCoupling = std::max(peakCoupling, std::abs(p.value(s)));
+        for (std::size_t i = 0; i < scene->probes().size(); ++i)
+            if (scene->probes()[i].role == ProbeRole::CouplingTorque)
+                peakCoupling[i] = std::max(peakCoupling[i], std::abs(scene->probes()[i].value(s)));
         if (progress) progress(s.getTime(), endTime);
     };
 
@@ -68,8 +70,13 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
     result.results.push_back({"drive_torque", sumProbes(*scene, steady, ProbeRole::DriveTorque), "N*m",
                               "sum of drive torques " + at});
     result.results.push_back({"peak_drive_torque", peakDrive, "N*m", "largest drive torque of the run"});
-    result.results.push_back({"peak_coupling_torque", peakCoupling, "N*m",
-                              "largest coupling torque of the run (start-up load)"});
+    // Couplings sit on shafts of different speeds: one peak each.
+    for (std::size_t i = 0; i < scene->probes().size(); ++i)
+        if (scene->probes()[i].role == ProbeRole::CouplingTorque) {
+            const std::string name = scene->probes()[i].name;
+            result.results.push_back({"peak." + name, peakCoupling[i], "N*m",
+                                      "largest |" + name + "| of the run (on its from-shaft)"});
+        }
     if (start == "rest" && omega > 0) {
         const std::size_t col = table.column(speedBody.name + ".speed");
         for (const auto& row : result.rows)

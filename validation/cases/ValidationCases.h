@@ -42,5 +42,6 @@ std::string formatValidationTable(const std::vector<ValidationRow>& rows);
 std::string modelsDirectory();
 
 std::vector<ValidationRow> burrMillCases(const std::string& filter);
+std::vector<ValidationRow> rollCrusherCases(const std::string& filter);
 
 }  // namespace milldyn

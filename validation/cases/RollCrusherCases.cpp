@@ -1,0 +1,305 @@
+// Validation of the single-roll crusher (seed 004) against its oracle
+// (validation/oracles/RollCrusherOracle.h):
+//  - 2-mass: the Simbody linearization's eigenvalues vs the exact roots of
+//    the characteristic cubic (24); the linear and the time-simulated
+//    steady response vs D_k, ψ_k (corrected eqs 29-34), also at the
+//    frequencies where the paper's misprinted Δ = u² − v² vanishes;
+//  - 10-mass: natural frequencies and damped eigenvalues vs the chain
+//    oracle's plain matrix eigenproblem; staggered vs in-phase row loads.
+// The model file describes the physical drive (rotor on the low-speed
+// side of the reducer); the adapter below reflects it to the motor shaft,
+// which is how the oracle (and the paper) state the system.
+
+#include "driver/ModelFile.h"
+#include "driver/analyses/Analysis.h"
+#include "validation/cases/ValidationCases.h"
+#include "validation/oracles/RollCrusherOracle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+namespace milldyn {
+namespace {
+
+namespace oc = milldyn::oracles;
+
+// Linear model vs closed form: both solve the same linear equations; the
+// numerical Jacobian (central differences, step 1e-5) is exact for these
+// linear elements up to round-off far below this.
+constexpr double kLinearTolerance = 1e-6;
+// Time simulation vs closed form after transients decay (issue #5: 1e-4):
+// the fitted amplitude carries the integrator's error (accuracy 1e-10 on
+// states whose oscillating part is a small fraction of their size).
+constexpr double kTimeSimulationTolerance = 1e-4;
+
+const char* kModel = "/roll_crusher.yaml";
+
+const ElementSpec& elementOfType(const ModelSpec& spec, const std::string& type) {
+    for (const auto& e : spec.elements)
+        if (e.type == type) return e;
+    throw std::runtime_error(spec.file + ": no " + type + " element");
+}
+
+/// The crusher at one fidelity level and row arrangement, with the shafts'
+/// own damping removed: the paper's models (and the oracle) damp only
+/// through the motor's slip characteristic.
+ModelSpec readCrusher(const std::string& level, const std::string& arrangement) {
+    ModelSpec spec = readModelFile(modelsDirectory() + kModel, defaultModelReader(), {{"fidelity.level", level}});
+    for (auto& e : spec.elements) {
+        if (e.type == "TorsionalCoupling") e.params["damping"].number = 0;
+        if (e.type == "PeriodicLoad") e.params["arrangement"].text = arrangement;
+    }
+    return spec;
+}
+
+/// The drive reflected to the motor shaft: masses along the coupling chain
+/// from the motor, each low-speed inertia and stiffness divided by the
+/// square of the ratio between its shaft and the motor.
+struct ReflectedChain {
+    oc::RollCrusherChainParams chain;
+    std::vector<std::string> bodies;   // chain order
+    std::vector<std::string> couplings;
+    double loadReflection = 1;         // row torque → motor-shaft torque
+};
+
+ReflectedChain reflectToMotor(const ModelSpec& spec) {
+    ReflectedChain r;
+    const ElementSpec* motor = &elementOfType(spec, "InductionMotor");
+    const std::string motorBody = motor->text("body");
+    const double slope = motor->number("linear_slope") > 0
+                             ? motor->number("linear_slope")
+                             : motor->number("rated_torque") /
+                                   (motor->number("synchronous_speed") - motor->number("rated_speed"));
+    r.chain.slipStiffness = slope;
+    std::string current = motorBody;
+    double ratio = 1;  // ω_motor / ω_current
+    r.bodies.push_back(current);
+    r.chain.inertias.push_back(spec.findBody(current)->inertia);
+    for (bool advanced = true; advanced;) {
+        advanced = false;
+        for (const auto& e : spec.elements)
+            if (e.type == "TorsionalCoupling" && e.names("bodies")[0] == current) {
+                // Stiffness is stated on the from-shaft: reflect by that shaft's ratio.
+                r.chain.stiffnesses.push_back(e.number("stiffness") / (ratio * ratio));
+                ratio *= e.number("ratio");
+                current = e.names("bodies")[1];
+                r.bodies.push_back(current);
+                r.couplings.push_back(e.name);
+                r.chain.inertias.push_back(spec.findBody(current)->inertia / (ratio * ratio));
+                advanced = true;
+                break;
+            }
+    }
+    r.loadReflection = 1 / ratio;
+    return r;
+}
+
+ValidationRow compareComplex(const std::string& name, const std::string& quantity, std::complex<double> value,
+                             std::complex<double> oracle, double tolerance, const std::string& note) {
+    ValidationRow row = compareRow(name, quantity, "1/s", std::abs(value), std::abs(oracle), tolerance, note);
+    row.relError = std::abs(value - oracle) / std::abs(oracle);  // complex distance, not just modulus
+    row.status = row.relError <= tolerance ? "pass" : "fail";
+    return row;
+}
+
+/// Eigenvalues of a linearize result that are not the rigid rotation (0).
+std::vector<std::complex<double>> elasticEigenvalues(const AnalysisResult& r) {
+    const DataTable* eig = nullptr;
+    for (const auto& t : r.extraTables)
+        if (t.name == "eigenvalues") eig = &t;
+    std::vector<std::complex<double>> out;
+    double scale = 0;
+    for (const auto& row : eig->rows) scale = std::max(scale, std::hypot(row[1], row[2]));
+    for (const auto& row : eig->rows)
+        if (std::hypot(row[1], row[2]) > 1e-9 * scale) out.emplace_back(row[1], row[2]);
+    return out;
+}
+
+std::complex<double> nearest(const std::vector<std::complex<double>>& set, std::complex<double> z) {
+    return *std::min_element(set.begin(), set.end(),
+                             [z](auto a, auto b) { return std::abs(a - z) < std::abs(b - z); });
+}
+
+std::string fmt(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+void twoMassRootsCase(std::vector<ValidationRow>& rows) {
+    const std::string name = "roll_crusher_2mass_roots";
+    ModelSpec spec = readCrusher("2-mass", "in_phase");
+    const ReflectedChain rc = reflectToMotor(spec);
+    const oc::RollCrusherTwoMassOracle oracle({rc.chain.inertias[0], rc.chain.inertias[1], rc.chain.stiffnesses[0],
+                                               rc.chain.slipStiffness});
+    spec.scenario = defaultScenario("linearize");
+    const auto eig = elasticEigenvalues(runAnalysis(spec));
+    for (const auto& root : oracle.calcCharacteristicRoots())
+        rows.push_back(compareComplex(name, "root " + fmt(root.real()) + (root.imag() >= 0 ? "+" : "") +
+                                                fmt(root.imag()) + "i of cubic (24)",
+                                      nearest(eig, root), root, kLinearTolerance,
+                                      "Simbody linearization (numerical Jacobian) vs exact roots"));
+    // The paper's approximate roots against the exact ones, for the record.
+    // The paper's approximate roots against the exact ones: a record of how
+    // far they are off at these inertias, flagged when beyond 1 %.
+    const auto approx = oracle.calcPaperApproximateRoots();
+    const auto exact = oracle.calcExactRootSplit();
+    const double validity = oracle.calcPaperValidityParameter();
+    const std::pair<const char*, std::pair<double, double>> approximations[] = {
+        {"k1", {approx.realRoot, exact.realRoot}},
+        {"alpha", {approx.alpha, exact.alpha}},
+        {"beta^2", {approx.betaSquared, exact.beta * exact.beta}}};
+    for (const auto& a : approximations) {
+        ValidationRow row;
+        row.caseName = name;
+        row.quantity = std::string("paper's approximate ") + a.first + " vs exact root (after eq 25)";
+        row.unit = std::string(a.first) == "beta^2" ? "1/s^2" : "1/s";
+        row.paper = a.second.first;
+        row.oracle = a.second.second;
+        row.relError = std::abs(a.second.first - a.second.second) / std::abs(a.second.second);
+        row.tolerance = 0.01;
+        row.status = row.relError <= row.tolerance ? "pass" : "flagged";
+        row.note = "the paper's validity parameter gamma^2 I1 I/(C I0^3) = " + fmt(validity) +
+                   (row.status == "flagged" ? "; the approximation fails here although the paper's condition is "
+                                              "read as satisfied when this is small"
+                                            : "");
+        rows.push_back(row);
+    }
+}
+
+void twoMassResponseCase(std::vector<ValidationRow>& rows) {
+    const std::string name = "roll_crusher_2mass_response";
+    ModelSpec spec = readCrusher("2-mass", "in_phase");
+    const ReflectedChain rc = reflectToMotor(spec);
+    const oc::RollCrusherTwoMassOracle oracle({rc.chain.inertias[0], rc.chain.inertias[1], rc.chain.stiffnesses[0],
+                                               rc.chain.slipStiffness});
+    const ElementSpec& load = elementOfType(spec, "PeriodicLoad");
+    const double rows9 = load.number("rows");
+    // Row amplitude b on the rotor is n_rows·b/ratio on the motor shaft.
+    const double loadScale = rows9 * rc.loadReflection;
+
+    const double beta0 = oracle.getUndampedFrequency();
+    std::vector<double> P = {0.3 * beta0, oracle.calcAmplitudePeak().frequency, beta0, 2.5 * beta0};
+    std::vector<std::string> why = {"below resonance", "true amplitude peak", "beta0", "above resonance"};
+    for (double p : oracle.calcPrintedResonanceFrequencies()) {
+        P.push_back(p);
+        why.push_back("a 'resonance' of the misprinted Delta = u^2 - v^2 (eq 37)");
+    }
+    spec.scenario = defaultScenario("frequency_response");
+    spec.scenario.params["load"].text = load.name;
+    spec.scenario.params["frequency_min"].number = *std::min_element(P.begin(), P.end()) * 0.5;
+    spec.scenario.params["frequency_max"].number = *std::max_element(P.begin(), P.end()) * 2;
+    spec.scenario.params["check_frequencies"].numbers = P;
+    spec.integrator.name = "RungeKuttaFeldberg";
+    spec.integrator.accuracy = 1e-10;
+    const AnalysisResult r = runAnalysis(spec);
+    const DataTable* checks = nullptr;
+    for (const auto& t : r.extraTables)
+        if (t.name == "time_checks") checks = &t;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+        const auto& row = checks->rows[i];  // one output (the reducer) per frequency
+        const auto h = oracle.calcHarmonicResponse(P[i]);
+        const std::string at = " at P = " + fmt(P[i]) + " rad/s (" + why[i] + ")";
+        rows.push_back(compareRow(name, "D (linear model)" + at, "1", row[2] / loadScale, h.amplitude,
+                                  kLinearTolerance, "linearized multibody vs corrected eqs (29)-(34)"));
+        ValidationRow phase = compareRow(name, "psi (linear model)" + at, "rad", row[5], h.phase, kLinearTolerance,
+                                         "phase of the reducer torque against the load");
+        phase.relError = std::abs(std::remainder(row[5] - h.phase, 2 * M_PI)) / std::max(1.0, std::abs(h.phase));
+        phase.status = phase.relError <= kLinearTolerance ? "pass" : "fail";
+        rows.push_back(phase);
+        rows.push_back(compareRow(name, "D (time simulation)" + at, "1", row[3] / loadScale, h.amplitude,
+                                  kTimeSimulationTolerance,
+                                  "RungeKuttaFeldberg 1e-10, fitted over 20 periods after the transients"));
+        ValidationRow simPhase = compareRow(name, "psi (time simulation)" + at, "rad", row[6], h.phase,
+                                            kTimeSimulationTolerance, "");
+        simPhase.relError = std::abs(std::remainder(row[6] - h.phase, 2 * M_PI)) / std::max(1.0, std::abs(h.phase));
+        simPhase.status = simPhase.relError <= kTimeSimulationTolerance ? "pass" : "fail";
+        rows.push_back(simPhase);
+    }
+}
+
+void chainModesCase(std::vector<ValidationRow>& rows) {
+    const std::string name = "roll_crusher_10mass_modes";
+    ModelSpec spec = readCrusher("10-mass", "staggered");
+    const ReflectedChain rc = reflectToMotor(spec);
+    const oc::RollCrusherChainOracle oracle(rc.chain);
+    spec.scenario = defaultScenario("linearize");
+    const AnalysisResult r = runAnalysis(spec);
+    const auto modes = oracle.calcUndampedModes();
+    for (Eigen::Index j = 1; j < modes.frequencies.size(); ++j) {  // 0 is the rigid rotation
+        const std::string key = "natural_frequency_" + std::to_string(j);
+        const ResultScalar* mb = r.find(key);
+        rows.push_back(compareRow(name, "undamped elastic frequency " + std::to_string(j), "rad/s",
+                                  mb ? mb->value : 0.0, modes.frequencies[j], kLinearTolerance,
+                                  "Simbody linearization vs K v = w^2 M v of the reflected chain"));
+    }
+    const auto eig = elasticEigenvalues(r);
+    for (const auto& l : oracle.calcDampedEigenvalues())
+        if (l.imag() >= 0 && std::abs(l) > 0)
+            rows.push_back(compareComplex(name, "damped eigenvalue " + fmt(l.real()) + "+" + fmt(l.imag()) + "i",
+                                          nearest(eig, l), l, kLinearTolerance,
+                                          "first-order state matrix of the chain with the motor's slip damping"));
+}
+
+void staggerCase(std::vector<ValidationRow>& rows) {
+    const std::string name = "roll_crusher_stagger";
+    double amplitude[2][2] = {{0, 0}, {0, 0}};  // [fidelity][arrangement]
+    double chainOracle[2] = {0, 0};              // [arrangement]
+    double P1 = 0;
+    for (int f = 0; f < 2; ++f)
+        for (int a = 0; a < 2; ++a) {
+            ModelSpec spec = readCrusher(f ? "10-mass" : "2-mass", a ? "staggered" : "in_phase");
+            const ElementSpec& load = elementOfType(spec, "PeriodicLoad");
+            const double nRows = load.number("rows");
+            P1 = load.number("fundamental_frequency");
+            spec.scenario = defaultScenario("frequency_response");
+            spec.scenario.params["load"].text = load.name;
+            spec.scenario.params["frequency_min"].number = P1;
+            spec.scenario.params["frequency_max"].number = 2 * P1;
+            spec.scenario.params["points"].number = 2;
+            const AnalysisResult r = runAnalysis(spec);
+            amplitude[f][a] = r.rows.front()[1 + 0] * nRows;  // the reducer is the first coupling
+            if (f == 1) {
+                // The chain oracle with the same row phases, reflected loads.
+                const ReflectedChain rc = reflectToMotor(spec);
+                const oc::RollCrusherChainOracle oracle(rc.chain);
+                const int n = static_cast<int>(rc.chain.inertias.size());
+                const auto loads = oc::RollCrusherChainOracle::makeRowLoads(
+                    n, rc.loadReflection, a ? 2 * M_PI / (n - 1) : 0.0);
+                const auto resp = oracle.calcHarmonicResponse(P1, loads);
+                chainOracle[a] = std::abs(resp.shaftTorques[0]);
+                rows.push_back(compareRow(name, std::string("reducer torque amplitude per unit row load, ") +
+                                                    (a ? "staggered" : "in phase") + ", 10-mass, P1",
+                                          "N*m/N*m", amplitude[f][a],
+                                          std::abs(resp.shaftTorques[0]), kLinearTolerance,
+                                          "linearized multibody chain vs chain oracle"));
+            }
+        }
+    // The lumped rotor cancels staggered rows exactly; the chain does not.
+    ValidationRow lumped = compareRow(name, "2-mass staggered / in-phase reducer amplitude at P1", "1",
+                                      amplitude[0][1] / amplitude[0][0], 0.0, 1e-9,
+                                      "absolute: nine evenly staggered sinusoids on one rigid body sum to zero");
+    lumped.relError = std::abs(amplitude[0][1] / amplitude[0][0]);
+    lumped.status = lumped.relError <= 1e-9 ? "pass" : "fail";
+    rows.push_back(lumped);
+    rows.push_back(compareRow(name, "10-mass staggered / in-phase reducer amplitude at P1", "1",
+                              amplitude[1][1] / amplitude[1][0], chainOracle[1] / chainOracle[0], kLinearTolerance,
+                              "the chain passes " + fmt(amplitude[1][1] / amplitude[1][0]) +
+                                  " of the in-phase amplitude through the reducer, where the 2-mass model passes "
+                                  "none"));
+}
+
+}  // namespace
+
+std::vector<ValidationRow> rollCrusherCases(const std::string& filter) {
+    std::vector<ValidationRow> rows;
+    auto wanted = [&](const std::string& name) { return filter.empty() || name.find(filter) != std::string::npos; };
+    if (wanted("roll_crusher_2mass_roots")) twoMassRootsCase(rows);
+    if (wanted("roll_crusher_2mass_response")) twoMassResponseCase(rows);
+    if (wanted("roll_crusher_10mass_modes")) chainModesCase(rows);
+    if (wanted("roll_crusher_stagger")) staggerCase(rows);
+    return rows;
+}
+
+}  // namespace milldyn
