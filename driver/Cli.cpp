@@ -8,6 +8,7 @@
 #include "plugins/ElementRegistry.h"
 #include "validation/cases/ValidationCases.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -21,8 +22,8 @@ constexpr const char* kVersion = "0.1.0";
 
 const char* kUsage =
     "usage:\n"
-    "  milldyn run MODEL.yaml [--out DIR] [--set path=value]... [--integrator NAME]\n"
-    "                         [--accuracy TOL] [--end-time T] [--quiet]\n"
+    "  milldyn run MODEL.yaml [--out DIR] [--set path=value]... [--scenario NAME]\n"
+    "                         [--integrator NAME] [--accuracy TOL] [--end-time T] [--quiet]\n"
     "  milldyn info MODEL.yaml [--set path=value]...\n"
     "  milldyn validate [--filter TEXT] [--json]\n"
     "  milldyn --version | --help\n";
@@ -57,6 +58,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
         else if (arg == "--integrator") a.overrides.push_back({"integrator.name", value(i)});
         else if (arg == "--accuracy") a.overrides.push_back({"integrator.accuracy", value(i)});
         else if (arg == "--end-time") a.overrides.push_back({"scenario.end_time", value(i)});
+        else if (arg == "--scenario") a.overrides.push_back({"use_scenario", value(i)});
         else if (arg == "--filter") a.filter = value(i);
         else if (arg == "--json") a.json = true;
         else if (arg == "--quiet") a.quiet = true;
@@ -69,10 +71,14 @@ Arguments parseArguments(const std::vector<std::string>& args) {
     return a;
 }
 
-std::string describeValue(double v, const std::string& unit) {
+std::string describeValue(const std::string& name, double v, const std::string& unit) {
     std::ostringstream s;
     s << std::setprecision(6) << v << ' ' << unit;
-    if (unit == "rad/s") s << " (" << std::setprecision(5) << v * 60 / (2 * M_PI) << " rpm)";
+    // rpm for shaft speeds; a frequency in rad/s gets Hz instead.
+    if (unit == "rad/s" && name.find("speed") != std::string::npos)
+        s << " (" << std::setprecision(5) << v * 60 / (2 * M_PI) << " rpm)";
+    else if (unit == "rad/s")
+        s << " (" << std::setprecision(5) << v / (2 * M_PI) << " Hz)";
     if (unit == "W" && std::abs(v) >= 1000) s << " (" << std::setprecision(4) << v / 1000 << " kW)";
     return s.str();
 }
@@ -114,7 +120,8 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     if (a.quiet) return 0;
     out << spec.name << "\n  analysis: " << result.analysis << "\n";
     for (const auto& r : result.results)
-        out << "  " << std::left << std::setw(24) << r.name << describeValue(r.value, r.unit) << "\n";
+        out << "  " << r.name << std::string(std::max<std::size_t>(2, 26 - std::min<std::size_t>(26, r.name.size())), ' ')
+            << describeValue(r.name, r.value, r.unit) << "\n";
     for (const auto& n : result.notes) out << "  note: " << n << "\n";
     if (result.statistics.steps > 0)
         out << "  integrator " << result.statistics.integrator << ", accuracy " << result.statistics.accuracy

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -73,7 +74,7 @@ public:
         ModelSpec spec;
         spec.file = m_file;
         checkKeys(root, "", {"format_version", "name", "description", "fidelity", "bodies", "elements",
-                             "scenario", "integrator", "outputs"});
+                             "scenario", "scenarios", "use_scenario", "integrator", "outputs"});
         const YAML::Node version = required(root, "format_version", "");
         const double versionNumber = readNumber(version, "format_version", "1");
         if (!(versionNumber >= 1 && versionNumber <= 1e6) || versionNumber != std::floor(versionNumber))
@@ -91,7 +92,7 @@ public:
         if (root["fidelity"]) readFidelity(root["fidelity"], spec);
         readBodies(required(root, "bodies", ""), spec);
         if (root["elements"]) readElements(root["elements"], spec);
-        readScenario(required(root, "scenario", ""), spec);
+        readScenarios(root, spec);
         if (!spec.fidelity.empty()) keepSelectedFidelity(spec);
         if (root["integrator"]) readIntegrator(root["integrator"], spec.integrator);
         if (root["outputs"]) readOutputs(root["outputs"], spec.outputs);
@@ -453,18 +454,53 @@ private:
         }
     }
 
-    void readScenario(const YAML::Node& n, ModelSpec& spec) const {
-        requireMap(n, "scenario");
-        ElementSpec& s = spec.scenario;
+    /// `scenario:` (the default) and named `scenarios:`, all checked; the
+    /// one `use_scenario:` names (default: `scenario`) is kept.
+    void readScenarios(const YAML::Node& root, ModelSpec& spec) const {
+        std::map<std::string, ElementSpec> named;
+        std::vector<std::string> names;
+        if (root["scenarios"]) {
+            const YAML::Node all = root["scenarios"];
+            requireMap(all, "scenarios");
+            for (auto it = all.begin(); it != all.end(); ++it) {
+                const std::string name = scalar(it->first, "scenarios");
+                if (named.count(name)) throw error(it->first, "scenarios." + name, "duplicate scenario name");
+                named[name] = readScenario(it->second, "scenarios." + name + ".", spec);
+                names.push_back(name);
+            }
+        }
+        if (root["use_scenario"]) {
+            const YAML::Node use = root["use_scenario"];
+            const std::string name = scalar(use, "use_scenario");
+            auto it = named.find(name);
+            if (it == named.end())
+                throw error(use, "use_scenario", "no scenario named '" + name + "' under scenarios:" +
+                                                     didYouMean(name, names));
+            if (root["scenario"]) readScenario(root["scenario"], "scenario.", spec);  // still checked
+            spec.scenario = it->second;
+            return;
+        }
+        if (!root["scenario"])
+            throw error(root, "scenario",
+                        names.empty() ? "missing required key 'scenario'"
+                                      : "missing required key 'scenario' (or use_scenario: one of " +
+                                            joinWords(names) + ")");
+        spec.scenario = readScenario(root["scenario"], "scenario.", spec);
+    }
+
+    ElementSpec readScenario(const YAML::Node& n, const std::string& prefix, const ModelSpec& spec) const {
+        requireMap(n, prefix.substr(0, prefix.size() - 1));
+        ElementSpec s;
         s.name = "scenario";
         s.where = where(n);
-        const YAML::Node kind = required(n, "analysis", "scenario.");
-        s.type = scalar(kind, "scenario.analysis");
+        const YAML::Node kind = required(n, "analysis", prefix);
+        s.type = scalar(kind, prefix + "analysis");
         const ElementSchema* schema = m_lookups.analysisSchema(s.type);
         if (!schema)
-            throw error(kind, "scenario.analysis",
+            throw error(kind, prefix + "analysis",
                         "unknown analysis '" + s.type + "'" + didYouMean(s.type, m_lookups.analysisKinds));
-        readParams(n, *schema, "scenario.", {"analysis"}, spec, s);
+        readParams(n, *schema, prefix, {"analysis"}, spec, s);
+        return s;
     }
 
     void readIntegrator(const YAML::Node& n, IntegratorSpec& integ) const {
@@ -503,65 +539,62 @@ private:
     }
 
     /// Walks `a.b.c`, descending into lists by item name or index, and
-    /// replaces (or adds) the last key's value.
+    /// replaces (or adds) the last key's value. A name shared by items of
+    /// different fidelity levels reaches all of them.
     void applyOverride(YAML::Node root, const Override& o) {
         const std::string label = "--set " + o.path;
+        auto fail = [&](const std::string& reason) { return SpecError({"<" + label + ">", 1, 1}, o.path, reason); };
         std::vector<std::string> parts;
         std::stringstream ss(o.path);
         for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
-        YAML::Node node;
-        node.reset(root);
+        std::vector<YAML::Node> nodes(1);
+        nodes[0].reset(root);
         for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
             const std::string& part = parts[i];
-            if (node.IsSequence()) {
-                // A default YAML::Node is a defined null, so a flag says "found".
-                YAML::Node found;
-                bool haveFound = false;
-                for (std::size_t k = 0; k < node.size() && !haveFound; ++k)
-                    if (node[k].IsMap() && node[k]["name"] && node[k]["name"].IsScalar() &&
-                        node[k]["name"].Scalar() == part) {
-                        found.reset(node[k]);
-                        haveFound = true;
+            std::vector<YAML::Node> next;
+            for (YAML::Node& node : nodes) {
+                if (node.IsSequence()) {
+                    for (std::size_t k = 0; k < node.size(); ++k)
+                        if (node[k].IsMap() && node[k]["name"] && node[k]["name"].IsScalar() &&
+                            node[k]["name"].Scalar() == part) {
+                            next.emplace_back();
+                            next.back().reset(node[k]);  // operator= would copy into the tree
+                        }
+                    if (next.empty() && !part.empty() && part.size() < 9 &&
+                        part.find_first_not_of("0123456789") == std::string::npos && std::stoul(part) < node.size()) {
+                        next.emplace_back();
+                        next.back().reset(node[std::stoul(part)]);
                     }
-                if (!haveFound && !part.empty() && part.size() < 9 &&
-                    part.find_first_not_of("0123456789") == std::string::npos) {
-                    const std::size_t index = std::stoul(part);
-                    if (index < node.size()) {
-                        found.reset(node[index]);
-                        haveFound = true;
+                    if (next.empty()) throw fail("no list item named '" + part + "' at this point of the path");
+                } else if (node.IsMap()) {
+                    if (!node[part]) {
+                        // An optional section the file leaves out (integrator:,
+                        // outputs:): create it; the reader then checks its keys.
+                        node[part] = YAML::Node(YAML::NodeType::Map);
+                        m_addedKeys.push_back({node, part, label});
+                        m_overridden.emplace_back(node[part], label);
                     }
+                    const YAML::Node child = node[part];
+                    next.emplace_back();
+                    next.back().reset(child);
+                } else {
+                    throw fail("'" + (i > 0 ? parts[i - 1] : part) + "' is a single value, the path goes no deeper");
                 }
-                if (!haveFound)
-                    throw SpecError({"<" + label + ">", 1, 1}, o.path,
-                                    "no list item named '" + part + "' at this point of the path");
-                node.reset(found);  // operator= would copy found into the tree
-            } else if (node.IsMap()) {
-                if (!node[part]) {
-                    // An optional section the file leaves out (integrator:,
-                    // outputs:): create it; the reader then checks its keys.
-                    node[part] = YAML::Node(YAML::NodeType::Map);
-                    m_addedKeys.push_back({node, part, label});
-                    m_overridden.emplace_back(node[part], label);
-                }
-                const YAML::Node child = node[part];
-                node.reset(child);
-            } else {
-                throw SpecError({"<" + label + ">", 1, 1}, o.path,
-                                "'" + (i > 0 ? parts[i - 1] : part) +
-                                    "' is a single value, the path goes no deeper");
             }
+            nodes.swap(next);  // element-wise operator= would write into the tree
         }
-        if (!node.IsMap())
-            throw SpecError({"<" + label + ">", 1, 1}, o.path, "the path must end at a key of a mapping");
         const std::string& last = parts.back();
-        if (node[last] && !node[last].IsScalar() && !node[last].IsNull())
-            throw SpecError({"<" + label + ">", 1, 1}, o.path, "--set replaces single values only");
-        if (!node[last]) m_addedKeys.push_back({node, last, label});
-        // Assigning into an existing node would write through YAML aliases
-        // (&x / *x) into every other use of the value: detach it first.
-        if (node[last]) node.remove(last);
-        node[last] = o.value;
-        m_overridden.emplace_back(node[last], label);
+        for (YAML::Node& node : nodes) {
+            if (!node.IsMap()) throw fail("the path must end at a key of a mapping");
+            if (node[last] && !node[last].IsScalar() && !node[last].IsNull())
+                throw fail("--set replaces single values only");
+            if (!node[last]) m_addedKeys.push_back({node, last, label});
+            // Assigning into an existing node would write through YAML aliases
+            // (&x / *x) into every other use of the value: detach it first.
+            if (node[last]) node.remove(last);
+            node[last] = o.value;
+            m_overridden.emplace_back(node[last], label);
+        }
     }
 };
 

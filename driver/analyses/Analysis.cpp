@@ -101,6 +101,24 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
             throw e.error("harmonic", "must be a whole number");
     };
     schemas["frequency_response"] = response;
+
+    ElementSchema map;
+    map.type = "resonance_map";
+    map.doc = "Dynamic factor of every coupling torque against rotor speed, the load harmonics following "
+              "the speed; bands above a threshold are reported as speeds to avoid.";
+    map.params = {
+        P::text("load", "name of the PeriodicLoad element"),
+        P::quantity("speed_min", "rad/s", "lowest rotor speed").above(0),
+        P::quantity("speed_max", "rad/s", "highest rotor speed").above(0),
+        P::quantity("points", "1", "speeds, evenly spaced").optional(600.0).atLeast(2).atMost(100000),
+        P::quantity("load_events_per_revolution", "1", "z: P_1 = z·Ω (teeth per sprocket row)").above(0),
+        P::quantity("threshold", "1", "dynamic factor above which a speed band is to be avoided")
+            .optional(1.3).above(0),
+    };
+    map.crossCheck = [](const ElementSpec& e) {
+        if (e.number("speed_max") <= e.number("speed_min")) throw e.error("speed_max", "must exceed speed_min");
+    };
+    schemas["resonance_map"] = map;
     return schemas;
 }
 
@@ -162,6 +180,7 @@ AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
     if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
     if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
+    if (spec.scenario.type == "resonance_map") return runResonanceMap(spec, progress);
     throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");
 }
 

@@ -83,6 +83,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress);
 
 /// Sum of every probe with this role in this state.
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);

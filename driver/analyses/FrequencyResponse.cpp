@@ -2,15 +2,13 @@
 // torque under one harmonic of a PeriodicLoad, from the linear model, and
 // checked by time simulation at chosen frequencies.
 //
-// Convention: row r's load torque is b·sin(P·t + k·φ_r) (applied as −that);
-// a coupling torque responds as T̄ + A·b·sin(P·t + ψ). A (per unit b) and ψ
-// are what the table reports; the dynamic factor is A/n for n rows, i.e. the
-// amplitude over the static torque all n rows in phase would put through
-// the drive.
+// Amplitude A and phase ψ per unit row amplitude, and the dynamic factor,
+// are defined in LoadResponse.h.
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/analyses/LinearModel.h"
+#include "driver/analyses/LoadResponse.h"
 #include "plugins/PeriodicLoad.h"
 
 #include <cmath>
@@ -26,20 +24,6 @@ const PeriodicLoad& findPeriodicLoad(const Scene& scene, const ModelSpec& spec) 
     const PeriodicLoad* load = scene.findElement<PeriodicLoad>(name);
     if (!load) throw spec.scenario.error("load", "'" + name + "' is not a PeriodicLoad element of this model");
     return *load;
-}
-
-/// The complex generalized force of harmonic k with unit row amplitude.
-Eigen::VectorXcd forcingVector(const Scene& scene, const PeriodicLoad& load, int k) {
-    const int n = static_cast<int>(scene.bodies().size());
-    Eigen::VectorXcd f = Eigen::VectorXcd::Zero(n);
-    const auto& bodies = load.bodies();
-    for (int r = 0; r < load.params().rows; ++r) {
-        const SimTK::MobilizedBodyIndex target = bodies[load.bodyOfRow(r)].getMobilizedBodyIndex();
-        for (int j = 0; j < n; ++j)
-            if (scene.bodies()[j].mobod.getMobilizedBodyIndex() == target)
-                f[j] += -std::exp(Complex(0, k * load.rowPhase(r)));
-    }
-    return f;
 }
 
 struct Fit {
@@ -72,19 +56,10 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     const LinearModel lm = linearizeScene(*scene, steady);
     const PeriodicLoad& load = findPeriodicLoad(*scene, spec);
     const int k = static_cast<int>(sc.number("harmonic"));
-    const Eigen::VectorXcd f = forcingVector(*scene, load, k);
-    const double rows = load.params().rows;
-
-    std::vector<int> outputs;  // probes that are coupling torques
-    for (std::size_t p = 0; p < scene->probes().size(); ++p)
-        if (scene->probes()[p].role == ProbeRole::CouplingTorque) outputs.push_back(static_cast<int>(p));
+    const LoadResponse response(*scene, lm, load);
+    const std::vector<int>& outputs = response.couplingOutputs();
     if (outputs.empty()) throw sc.error("load", "the model has no coupling whose torque could respond");
-
-    auto linearOutput = [&](double P, int probe) {
-        const Eigen::VectorXcd X = harmonicResponse(lm, P, f);
-        return Complex(lm.outputQ.row(probe) * X.real(), lm.outputQ.row(probe) * X.imag()) +
-               Complex(0, P) * Complex(lm.outputU.row(probe) * X.real(), lm.outputU.row(probe) * X.imag());
-    };
+    auto linearOutput = [&](double P, int probe) { return response.output(P, k, probe); };
 
     AnalysisResult result;
     result.analysis = "frequency_response";
@@ -111,7 +86,7 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
         std::vector<double> rest;
         for (std::size_t o = 0; o < outputs.size(); ++o) {
             const Complex y = linearOutput(P, outputs[o]);
-            row.push_back(std::abs(y) / rows);
+            row.push_back(std::abs(y) / response.staticReference(outputs[o]));
             rest.push_back(std::abs(y));
             rest.push_back(std::arg(y));
             if (std::abs(y) > peak[o]) {
@@ -125,8 +100,8 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     addLinearModelOutputs(lm, result);
     for (std::size_t o = 0; o < outputs.size(); ++o) {
         const std::string& name = scene->probes()[outputs[o]].name;
-        result.results.push_back({name + ".peak_dynamic_factor", peak[o] / rows, "1",
-                                  "largest amplitude over n·b in the frequency range"});
+        result.results.push_back({name + ".peak_dynamic_factor", peak[o] / response.staticReference(outputs[o]), "1",
+                                  "largest amplitude over the quasi-static in-phase amplitude, in the range"});
         result.results.push_back({name + ".peak_frequency", peakAt[o], "rad/s", "where it occurs"});
     }
     std::vector<std::size_t> factorColumns;

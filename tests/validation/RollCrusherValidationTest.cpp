@@ -29,11 +29,12 @@ TEST(RollCrusherValidation, EveryMultibodyComparisonPasses) {
     EXPECT_GT(compared, 30);
 }
 
-TEST(RollCrusherValidation, AllFourCasesRan) {
+TEST(RollCrusherValidation, AllFiveCasesRan) {
     std::set<std::string> cases;
     for (const auto& r : allCrusherRows()) cases.insert(r.caseName);
     EXPECT_EQ(cases, (std::set<std::string>{"roll_crusher_2mass_roots", "roll_crusher_2mass_response",
-                                            "roll_crusher_10mass_modes", "roll_crusher_stagger"}));
+                                            "roll_crusher_10mass_modes", "roll_crusher_stagger",
+                                            "roll_crusher_resonance_map"}));
 }
 
 TEST(RollCrusherValidation, MisprintedResonancesAreCheckedAndFinite) {
