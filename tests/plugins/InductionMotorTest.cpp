@@ -21,6 +21,8 @@ namespace milldyn {
 namespace {
 
 using test::ShaftSystem;
+using test::number;
+using test::word;
 using Law = InductionMotorParams::Law;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -393,19 +395,7 @@ TEST(InductionMotorTest, NeverSwitchingOffIsAccepted) {
 
 // ---- 6. registry -----------------------------------------------------------
 
-ParamValue number(double v) {
-    ParamValue p;
-    p.number = v;
-    p.given = true;
-    return p;
-}
 
-ParamValue word(const std::string& w) {
-    ParamValue p;
-    p.text = w;
-    p.given = true;
-    return p;
-}
 
 // As the reader would hand it over: every key present, defaults not given.
 ElementSpec motorSpec(double ratedSpeed, double synchronousSpeed) {
@@ -428,11 +418,7 @@ ElementSpec motorSpec(double ratedSpeed, double synchronousSpeed) {
     return e;
 }
 
-const ElementType& motorType() {
-    const ElementType* type = ElementRegistry::instance().find("InductionMotor");
-    if (!type) throw std::runtime_error("InductionMotor is not registered");
-    return *type;
-}
+const ElementType& motorType() { return test::registeredType("InductionMotor"); }
 
 TEST(InductionMotorRegistryTest, SchemaListsTheDocumentedKeys) {
     ASSERT_NE(ElementRegistry::instance().find("InductionMotor"), nullptr);

@@ -21,6 +21,10 @@ namespace milldyn {
 namespace {
 
 using test::ShaftSystem;
+using test::number;
+using test::word;
+using test::names;
+using test::numbers;
 
 constexpr double kShaftInertia = 0.1;     // kg*m^2
 constexpr double kSmoothingSpeed = 0.01;  // rad/s, the schema default
@@ -463,33 +467,9 @@ TEST(PeriodicLoadTest, MessageGivesTheOffendingValue) {
 
 // ---- 8. registry ---------------------------------------------------------------
 
-ParamValue number(double v) {
-    ParamValue p;
-    p.number = v;
-    p.given = true;
-    return p;
-}
 
-ParamValue word(const std::string& w) {
-    ParamValue p;
-    p.text = w;
-    p.given = true;
-    return p;
-}
 
-ParamValue names(const std::vector<std::string>& n) {
-    ParamValue p;
-    p.names = n;
-    p.given = true;
-    return p;
-}
 
-ParamValue numbers(const std::vector<double>& v) {
-    ParamValue p;
-    p.numbers = v;
-    p.given = true;
-    return p;
-}
 
 // Three rows of M̄ = 10 N*m, b = (4, 2), P1 = 5 rad/s, as the model-file
 // reader would hand them over (every key present).
@@ -508,11 +488,7 @@ ElementSpec loadSpec(const std::vector<std::string>& bodies, double rows = 3,
     return e;
 }
 
-const ElementType& loadType() {
-    const ElementType* type = ElementRegistry::instance().find("PeriodicLoad");
-    if (!type) throw std::runtime_error("PeriodicLoad is not registered");
-    return *type;
-}
+const ElementType& loadType() { return test::registeredType("PeriodicLoad"); }
 
 TEST(PeriodicLoadRegistryTest, SchemaListsTheDocumentedKeys) {
     ASSERT_NE(ElementRegistry::instance().find("PeriodicLoad"), nullptr);

@@ -21,6 +21,8 @@ namespace milldyn {
 namespace {
 
 using test::ShaftSystem;
+using test::number;
+using test::word;
 using Law = ResistanceTorqueParams::Law;
 
 constexpr double kShaftInertia = 0.1;    // kg*m^2
@@ -367,19 +369,7 @@ TEST(ResistanceTorqueTest, MessageGivesTheOffendingValue) {
 
 // ---- 6. registry -----------------------------------------------------------
 
-ParamValue number(double v) {
-    ParamValue p;
-    p.number = v;
-    p.given = true;
-    return p;
-}
 
-ParamValue word(const std::string& w) {
-    ParamValue p;
-    p.text = w;
-    p.given = true;
-    return p;
-}
 
 ElementSpec feedSpec() {
     ElementSpec e;
@@ -398,11 +388,7 @@ ElementSpec feedSpec() {
     return e;
 }
 
-const ElementType& loadType() {
-    const ElementType* type = ElementRegistry::instance().find("ResistanceTorque");
-    if (!type) throw std::runtime_error("ResistanceTorque is not registered");
-    return *type;
-}
+const ElementType& loadType() { return test::registeredType("ResistanceTorque"); }
 
 TEST(ResistanceTorqueRegistryTest, SchemaListsTheDocumentedKeys) {
     ASSERT_NE(ElementRegistry::instance().find("ResistanceTorque"), nullptr);

@@ -5,6 +5,8 @@
 // equation of motion is J·u̇ = (sum of mobility torques on it), whatever the
 // mass: the tests rely on that to turn accelerations into torques.
 
+#include "plugins/ElementRegistry.h"
+
 #include <Simbody.h>
 
 #include <gtest/gtest.h>
@@ -161,6 +163,43 @@ void expectInvalidArgumentNaming(const std::string& parameter, Make&& make) {
         EXPECT_NE(std::string(e.what()).find(parameter), std::string::npos)
             << "message does not name " << parameter << ": " << e.what();
     }
+}
+
+// ---- element specs as the model-file reader hands them over ---------------
+
+inline ParamValue number(double v) {
+    ParamValue p;
+    p.number = v;
+    p.given = true;
+    return p;
+}
+
+inline ParamValue word(const std::string& w) {
+    ParamValue p;
+    p.text = w;
+    p.given = true;
+    return p;
+}
+
+inline ParamValue names(const std::vector<std::string>& n) {
+    ParamValue p;
+    p.names = n;
+    p.given = true;
+    return p;
+}
+
+inline ParamValue numbers(const std::vector<double>& v) {
+    ParamValue p;
+    p.numbers = v;
+    p.given = true;
+    return p;
+}
+
+/// A registered element type; throws if it is missing.
+inline const ElementType& registeredType(const std::string& type) {
+    const ElementType* t = ElementRegistry::instance().find(type);
+    if (!t) throw std::runtime_error(type + " is not registered");
+    return *t;
 }
 
 }  // namespace milldyn::test

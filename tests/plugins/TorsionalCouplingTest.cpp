@@ -20,6 +20,7 @@ namespace milldyn {
 namespace {
 
 using test::ShaftSystem;
+using test::number;
 
 // Seed 003's belt, typed in from the paper: J1 motor side, J2 millstone,
 // c and b of the belt, u_p = 3.12.
@@ -318,12 +319,6 @@ TEST(TorsionalCouplingTest, ZeroStiffnessAndDampingAreAccepted) {
 
 // ---- 6. registry -----------------------------------------------------------
 
-ParamValue number(double v) {
-    ParamValue p;
-    p.number = v;
-    p.given = true;
-    return p;
-}
 
 ElementSpec couplingSpec(const std::string& from, const std::string& to) {
     ElementSpec e;

@@ -95,6 +95,12 @@ ReflectedChain reflectToMotor(const ModelSpec& spec) {
     return r;
 }
 
+/// The 2-mass oracle of a reflected two-body drive.
+oc::RollCrusherTwoMassOracle twoMassOracle(const ReflectedChain& rc) {
+    return oc::RollCrusherTwoMassOracle(
+        {rc.chain.inertias.at(0), rc.chain.inertias.at(1), rc.chain.stiffnesses.at(0), rc.chain.slipStiffness});
+}
+
 ValidationRow compareComplex(const std::string& name, const std::string& quantity, std::complex<double> value,
                              std::complex<double> oracle, double tolerance, const std::string& note) {
     ValidationRow row = compareRow(name, quantity, "1/s", std::abs(value), std::abs(oracle), tolerance, note);
@@ -131,8 +137,7 @@ void twoMassRootsCase(std::vector<ValidationRow>& rows) {
     const std::string name = "roll_crusher_2mass_roots";
     ModelSpec spec = readCrusher("2-mass", "in_phase");
     const ReflectedChain rc = reflectToMotor(spec);
-    const oc::RollCrusherTwoMassOracle oracle({rc.chain.inertias[0], rc.chain.inertias[1], rc.chain.stiffnesses[0],
-                                               rc.chain.slipStiffness});
+    const oc::RollCrusherTwoMassOracle oracle = twoMassOracle(rc);
     spec.scenario = defaultScenario("linearize");
     const auto eig = elasticEigenvalues(runAnalysis(spec));
     for (const auto& root : oracle.calcCharacteristicRoots())
@@ -172,8 +177,7 @@ void twoMassResponseCase(std::vector<ValidationRow>& rows) {
     const std::string name = "roll_crusher_2mass_response";
     ModelSpec spec = readCrusher("2-mass", "in_phase");
     const ReflectedChain rc = reflectToMotor(spec);
-    const oc::RollCrusherTwoMassOracle oracle({rc.chain.inertias[0], rc.chain.inertias[1], rc.chain.stiffnesses[0],
-                                               rc.chain.slipStiffness});
+    const oc::RollCrusherTwoMassOracle oracle = twoMassOracle(rc);
     const ElementSpec& load = elementOfType(spec, "PeriodicLoad");
     const double rows9 = load.number("rows");
     // Row amplitude b on the rotor is n_rows·b/ratio on the motor shaft.
@@ -303,8 +307,7 @@ void resonanceMapCase(std::vector<ValidationRow>& rows) {
     const std::string name = "roll_crusher_resonance_map";
     ModelSpec spec = readCrusher("2-mass", "in_phase");
     const ReflectedChain rc = reflectToMotor(spec);
-    const oc::RollCrusherTwoMassOracle oracle({rc.chain.inertias[0], rc.chain.inertias[1], rc.chain.stiffnesses[0],
-                                               rc.chain.slipStiffness});
+    const oc::RollCrusherTwoMassOracle oracle = twoMassOracle(rc);
     const ElementSpec& load = elementOfType(spec, "PeriodicLoad");
     const auto& b = load.numbers("amplitudes");
     const double z = 8;  // load events per revolution, as in the model's resonance_map scenario
