@@ -17,6 +17,15 @@ const ResultScalar* AnalysisResult::find(const std::string& name) const {
 
 namespace {
 
+/// Shared by the analyses that detect a shaft coming to rest.
+ParamSchema stopSpeedParam() {
+    return ParamSchema::quantity("stop_speed", "rad/s",
+                                 "standstill is detected at this speed and extrapolated to zero; keep it above "
+                                 "the loads' regularisation band (>= 5 smoothing_speed)")
+        .optional(0.1)
+        .above(0);
+}
+
 std::map<std::string, ElementSchema> makeAnalysisSchemas() {
     using P = ParamSchema;
     std::map<std::string, ElementSchema> schemas;
@@ -31,10 +40,7 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
             .optional("rest"),
         P::body("speed_body", "body whose speed the summary reports (default: the first)").optional(""),
         P::body("runout_body", "body whose first stop after switch-off ends the run-out").optional(""),
-        P::quantity("stop_speed", "rad/s",
-                    "standstill is detected at this speed and extrapolated to zero; keep it above "
-                    "the loads' regularisation band (>= 5 smoothing_speed)")
-            .optional(0.1).above(0),
+        stopSpeedParam(),
     };
     schemas["transient"] = transient;
 
@@ -56,10 +62,7 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
         P::body("speed_body", "body whose steady speed is reported (default: the first)").optional(""),
         P::quantity("tolerance", "1", "relative tolerance on the identified torque")
             .optional(1e-10).above(0).atMost(1e-2),
-        P::quantity("stop_speed", "rad/s",
-                    "standstill is detected at this speed and extrapolated to zero; keep it above "
-                    "the loads' regularisation band (>= 5 smoothing_speed)")
-            .optional(0.1).above(0),
+        stopSpeedParam(),
     };
     schemas["coastdown_identify"] = identify;
 
