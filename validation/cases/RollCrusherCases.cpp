@@ -300,6 +300,42 @@ void staggerCase(std::vector<ValidationRow>& rows) {
                                   "none"));
 }
 
+/// The paper's approximate roots against the exact ones over the inertia
+/// ratio I/I1 = 0.01 … 1000, at the model's γ and first frequency β0 (C is
+/// set to keep β0): where the validity parameter γ²I1I/(CI0³) alone is not
+/// a guide. Paper-vs-exact rows: flagged beyond 1 %.
+void approximationSweepCase(std::vector<ValidationRow>& rows) {
+    const std::string name = "roll_crusher_approximation_sweep";
+    const ReflectedChain rc = reflectToMotor(readCrusher("2-mass", "in_phase"));
+    const oc::RollCrusherTwoMassOracle model = twoMassOracle(rc);
+    const double I1 = rc.chain.inertias[0], gamma = rc.chain.slipStiffness, beta0 = model.getUndampedFrequency();
+    for (double ratio : {0.01, 0.1, 1.0, 10.0, 100.0, 1000.0}) {
+        const double I = ratio * I1;
+        const double C = beta0 * beta0 * I1 * I / (I1 + I);  // keeps β0² = C·I0/(I1·I)
+        const oc::RollCrusherTwoMassOracle o({I1, I, C, gamma});
+        const auto approx = o.calcPaperApproximateRoots();
+        const auto exact = o.calcExactRootSplit();
+        const std::pair<const char*, std::pair<double, double>> items[] = {
+            {"k1", {approx.realRoot, exact.realRoot}},
+            {"alpha", {approx.alpha, exact.alpha}},
+            {"beta^2", {approx.betaSquared, exact.beta * exact.beta}}};
+        for (const auto& it : items) {
+            ValidationRow row;
+            row.caseName = name;
+            row.quantity = std::string("approximate ") + it.first + " vs exact at I/I1 = " + fmt(ratio);
+            row.unit = std::string(it.first) == "beta^2" ? "1/s^2" : "1/s";
+            row.paper = it.second.first;
+            row.oracle = it.second.second;
+            row.relError = std::abs(it.second.first - it.second.second) / std::abs(it.second.second);
+            row.tolerance = 0.01;
+            row.status = row.relError <= row.tolerance ? "pass" : "flagged";
+            row.note = "validity parameter " + fmt(o.calcPaperValidityParameter()) + ", gamma^2 I^2/(C I0^3) = " +
+                       fmt(o.calcRealRootCorrectionParameter());
+            rows.push_back(row);
+        }
+    }
+}
+
 /// The resonance map of the 2-mass model with rows in phase: at each speed
 /// the harmonics superpose, DF(Ω) = Σ b_k·D(k·z·Ω)/Σ b_k, with D the
 /// oracle's corrected amplitude (the in-phase rows reflect to one load).
@@ -343,6 +379,7 @@ std::vector<ValidationRow> rollCrusherCases(const std::string& filter) {
     if (wanted("roll_crusher_10mass_modes")) chainModesCase(rows);
     if (wanted("roll_crusher_stagger")) staggerCase(rows);
     if (wanted("roll_crusher_resonance_map")) resonanceMapCase(rows);
+    if (wanted("roll_crusher_approximation_sweep")) approximationSweepCase(rows);
     return rows;
 }
 
