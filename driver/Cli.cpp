@@ -2,6 +2,7 @@
 
 #include "driver/ModelFile.h"
 #include "driver/SceneBuilder.h"
+#include "driver/Sweep.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
 #include "driver/outputs/Writers.h"
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <thread>
 #include <unistd.h>
 
 namespace milldyn {
@@ -26,6 +28,9 @@ const char* kUsage =
     "                         [--integrator NAME] [--accuracy TOL] [--end-time T] [--quiet]\n"
     "  milldyn info MODEL.yaml [--set path=value]...\n"
     "  milldyn validate [--filter TEXT] [--json]\n"
+    "  milldyn sweep MODEL.yaml (--grid path=a:b:n... | --lhs N --range path=a:b...) [--seed S]\n"
+    "                           [--jobs N] [--shard i/N] [--out DIR] [--set path=value]...\n"
+    "  milldyn merge DIR... --out DIR\n"
     "  milldyn --version | --help\n";
 
 class UsageError : public std::runtime_error {
@@ -41,7 +46,21 @@ struct Arguments {
     std::string filter;
     bool json = false;
     bool quiet = false;
+    std::vector<std::string> positional;  ///< after the model (merge: directories)
+    std::vector<std::string> grids, ranges;
+    std::size_t lhs = 0;
+    unsigned long seed = 1;
+    unsigned jobs = 0;  ///< 0: all cores
+    std::size_t shardIndex = 0, shardCount = 1;
 };
+
+std::size_t parseCount(const std::string& option, const std::string& text, std::size_t max) {
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || text[0] == '-' || v > max)
+        throw UsageError(option + " needs a whole number up to " + std::to_string(max) + ", got '" + text + "'");
+    return static_cast<std::size_t>(v);
+}
 
 Arguments parseArguments(const std::vector<std::string>& args) {
     Arguments a;
@@ -60,14 +79,33 @@ Arguments parseArguments(const std::vector<std::string>& args) {
         else if (arg == "--end-time") a.overrides.push_back({"scenario.end_time", value(i)});
         else if (arg == "--scenario") a.overrides.push_back({"use_scenario", value(i)});
         else if (arg == "--filter") a.filter = value(i);
+        else if (arg == "--grid") a.grids.push_back(value(i));
+        else if (arg == "--range") a.ranges.push_back(value(i));
+        else if (arg == "--lhs") a.lhs = parseCount(arg, value(i), 1000000);
+        else if (arg == "--seed") a.seed = parseCount(arg, value(i), 4294967295ULL);
+        else if (arg == "--jobs") a.jobs = static_cast<unsigned>(parseCount(arg, value(i), 1024));
+        else if (arg == "--shard") {
+            const std::string v = value(i);
+            const auto slash = v.find('/');
+            if (slash == std::string::npos) throw UsageError("--shard needs i/N, got '" + v + "'");
+            a.shardIndex = parseCount("--shard", v.substr(0, slash), 1000000);
+            a.shardCount = parseCount("--shard", v.substr(slash + 1), 1000000);
+            if (a.shardCount == 0 || a.shardIndex >= a.shardCount)
+                throw UsageError("--shard i/N needs 0 <= i < N, got '" + v + "'");
+        }
         else if (arg == "--json") a.json = true;
         else if (arg == "--quiet") a.quiet = true;
         else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
         else if (a.model.empty()) a.model = arg;
+        else if (a.command == "merge") a.positional.push_back(arg);
         else throw UsageError("unexpected argument " + arg);
     }
-    if ((a.command == "run" || a.command == "info") && a.model.empty())
+    if ((a.command == "run" || a.command == "info" || a.command == "sweep") && a.model.empty())
         throw UsageError(a.command + " needs a model file");
+    if (a.command == "merge") {
+        if (a.model.empty()) throw UsageError("merge needs sweep directories");
+        a.positional.insert(a.positional.begin(), a.model);
+    }
     return a;
 }
 
@@ -154,6 +192,51 @@ int commandInfo(const Arguments& a, std::ostream& out) {
     return 0;
 }
 
+int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
+    if (a.grids.empty() == (a.lhs == 0))
+        throw UsageError("sweep needs --grid path=a:b:n ... or --lhs N with --range path=a:b ...");
+    if (a.lhs > 0 && a.ranges.empty()) throw UsageError("--lhs needs at least one --range path=a:b");
+    if (!a.grids.empty() && !a.ranges.empty()) throw UsageError("--range goes with --lhs, not with --grid");
+    std::vector<SweepAxis> axes;
+    for (const auto& g : a.grids) axes.push_back(parseGrid(g));
+    for (const auto& r : a.ranges) axes.push_back(parseRange(r));
+    const SweepPlan plan = a.lhs > 0 ? makeLatinHypercube(axes, a.lhs, a.seed) : makeGrid(axes);
+    // The model must read before hundreds of points report the same error.
+    readModelFile(a.model, defaultModelReader(), a.overrides);
+
+    SweepOptions options;
+    options.model = a.model;
+    options.baseOverrides = a.overrides;
+    options.jobs = a.jobs > 0 ? a.jobs : std::max(1u, std::thread::hardware_concurrency());
+    options.shardIndex = a.shardIndex;
+    options.shardCount = a.shardCount;
+    options.outDir = a.outDir;
+    const bool showProgress = !a.quiet && ::isatty(STDERR_FILENO);
+    const auto start = std::chrono::steady_clock::now();
+    auto progress = [&](std::size_t done, std::size_t total, std::size_t failed) {
+        if (!showProgress) return;
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double eta = done > 0 ? elapsed * double(total - done) / double(done) : 0;
+        err << "\r  " << done << "/" << total << " points, " << failed << " failed, ETA " << std::setprecision(3)
+            << eta << " s   " << std::flush;
+    };
+    const SweepSummary summary = runSweep(plan, options, progress);
+    if (showProgress) err << "\r" << std::string(50, ' ') << "\r";
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!a.quiet)
+        out << "sweep of " << a.model << ": " << summary.total << " points (" << summary.run << " run, "
+            << summary.resumed << " resumed), " << summary.failed << " not ok, " << options.jobs << " jobs, "
+            << std::setprecision(3) << wall << " s wall\n  wrote " << summary.files.front() << "\n";
+    return 0;
+}
+
+int commandMerge(const Arguments& a, std::ostream& out) {
+    const SweepSummary summary = mergeSweeps(a.positional, a.outDir);
+    out << "merged " << a.positional.size() << " sweep directories: " << summary.total << " points, "
+        << summary.failed << " not ok\n  wrote " << summary.files.front() << "\n";
+    return 0;
+}
+
 int commandValidate(const Arguments& a, std::ostream& out) {
     const auto rows = runValidationCases(a.filter);
     if (a.json) {
@@ -182,6 +265,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         if (a.command == "run") return commandRun(a, out, err);
         if (a.command == "info") return commandInfo(a, out);
         if (a.command == "validate") return commandValidate(a, out);
+        if (a.command == "sweep") return commandSweep(a, out, err);
+        if (a.command == "merge") return commandMerge(a, out);
         throw UsageError("unknown command '" + a.command + "'");
     } catch (const UsageError& e) {
         err << "milldyn: error: " << e.what() << "\n" << kUsage;

@@ -258,6 +258,7 @@ private:
                                                 std::to_string(n.size()) + " items");
                     for (std::size_t i = 0; i < 2; ++i) {
                         v.names.push_back(scalar(n[i], key));
+                        v.itemWhere.push_back(where(n[i]));
                         requireBody(n[i], key, v.names.back(), model);
                     }
                     break;
@@ -266,6 +267,7 @@ private:
                     requireCount(n, key, p);
                     for (std::size_t i = 0; i < n.size(); ++i) {
                         v.names.push_back(scalar(n[i], key));
+                        v.itemWhere.push_back(where(n[i]));
                         requireBody(n[i], key, v.names.back(), model);
                     }
                     break;
@@ -363,14 +365,16 @@ private:
             throw SpecError({m_file, 1, 1}, "fidelity.level", "no body belongs to level '" + spec.fidelity + "'");
         auto checkRefs = [&](const ElementSpec& e, const std::string& prefix) {
             for (const auto& kv : e.params) {
-                std::vector<std::string> refs = kv.second.names;
+                const ParamValue& v = kv.second;
+                for (std::size_t i = 0; i < v.names.size(); ++i)
+                    if (!spec.findBody(v.names[i]))
+                        throw SpecError(i < v.itemWhere.size() ? v.itemWhere[i] : v.where, prefix + kv.first,
+                                        "body '" + v.names[i] + why);
                 const ElementSchema* schema = prefix == "scenario." ? m_lookups.analysisSchema(e.type)
                                                                     : m_lookups.elementSchema(e.type);
                 const ParamSchema* p = schema ? schema->find(kv.first) : nullptr;
-                if (p && p->kind == ParamKind::BodyRef && !kv.second.text.empty()) refs.push_back(kv.second.text);
-                for (const auto& r : refs)
-                    if (!spec.findBody(r))
-                        throw SpecError(kv.second.where, prefix + kv.first, "body '" + r + why);
+                if (p && p->kind == ParamKind::BodyRef && !v.text.empty() && !spec.findBody(v.text))
+                    throw SpecError(v.where, prefix + kv.first, "body '" + v.text + why);
             }
         };
         for (const auto& e : spec.elements) checkRefs(e, e.name + ".");
@@ -538,6 +542,17 @@ private:
         if (n["plots"]) out.plots = readBool(n["plots"], "outputs.plots");
     }
 
+    /// How many places of the document hold `target` (an anchored block
+    /// used through aliases is one node at several places).
+    static int occurrences(const YAML::Node& node, const YAML::Node& target) {
+        int count = node.is(target) ? 1 : 0;
+        if (node.IsMap())
+            for (auto it = node.begin(); it != node.end(); ++it) count += occurrences(it->second, target);
+        else if (node.IsSequence())
+            for (const auto& child : node) count += occurrences(child, target);
+        return count;
+    }
+
     /// Walks `a.b.c`, descending into lists by item name or index, and
     /// replaces (or adds) the last key's value. A name shared by items of
     /// different fidelity levels reaches all of them.
@@ -581,6 +596,13 @@ private:
                     throw fail("'" + (i > 0 ? parts[i - 1] : part) + "' is a single value, the path goes no deeper");
                 }
             }
+            // An anchored block used through aliases is one node: changing it
+            // would change every use. yaml-cpp cannot copy it without losing
+            // the source locations, so such an override is refused.
+            for (const auto& n : next)
+                if (occurrences(root, n) > 1)
+                    throw fail("'" + part + "' is an anchored block used through aliases (*name); --set would change "
+                               "every use of it: write the value in the file instead");
             nodes.swap(next);  // element-wise operator= would write into the tree
         }
         const std::string& last = parts.back();

@@ -86,6 +86,7 @@ struct ParamValue {
     double number = 0;                  ///< Quantity, SI
     std::string text;                   ///< Choice, BodyRef, Text
     std::vector<std::string> names;     ///< BodyPair, BodyList
+    std::vector<SourceLocation> itemWhere;  ///< where each list item was written
     std::vector<double> numbers;        ///< QuantityList, SI
     SourceLocation where;
     bool given = false;                 ///< false: filled from the default

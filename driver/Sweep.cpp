@@ -1,0 +1,318 @@
+#include "driver/Sweep.h"
+
+#include "driver/Simulation.h"
+#include "driver/analyses/Analysis.h"
+#include "driver/outputs/AtomicFile.h"
+#include "driver/outputs/Writers.h"
+#include "plugins/ElementRegistry.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <random>
+#include <set>
+#include <sstream>
+#include <thread>
+
+namespace milldyn {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+SpecError optionError(const std::string& option, const std::string& text, const std::string& reason) {
+    return SpecError({"<" + option + " " + text + ">", 1, 1}, option, reason);
+}
+
+/// "12.5 N*m" → (12.5, "N*m"); the number must be the whole prefix.
+std::pair<double, std::string> splitValue(const std::string& option, const std::string& all, const std::string& text) {
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    const double v = std::strtod(begin, &end);
+    if (end == begin || !std::isfinite(v)) throw optionError(option, all, "'" + text + "' is not a number");
+    std::string unit(end);
+    unit.erase(0, unit.find_first_not_of(' '));
+    unit.erase(unit.find_last_not_of(' ') + 1);
+    return {v, unit};
+}
+
+/// Splits "path=rest" and rest on ':'.
+std::pair<std::string, std::vector<std::string>> splitSpec(const std::string& option, const std::string& text) {
+    const auto eq = text.find('=');
+    if (eq == std::string::npos || eq == 0) throw optionError(option, text, "expected path=a:b" + std::string(option == "--grid" ? ":n" : ""));
+    std::vector<std::string> parts;
+    std::stringstream ss(text.substr(eq + 1));
+    for (std::string p; std::getline(ss, p, ':');) parts.push_back(p);
+    return {text.substr(0, eq), parts};
+}
+
+std::string valueText(double v, const std::string& unit) {
+    return formatDouble(v) + (unit.empty() ? "" : " " + unit);
+}
+
+std::string pointFile(const std::string& dir, std::size_t index) {
+    char name[32];
+    std::snprintf(name, sizeof name, "%06zu.json", index);
+    return dir + "/points/" + name;
+}
+
+Json axesJson(const SweepPlan& plan, std::size_t point) {
+    Json inputs = Json::array();
+    for (std::size_t a = 0; a < plan.axes.size(); ++a)
+        inputs.push_back({{"path", plan.axes[a].path},
+                          {"value", plan.axes[a].values[plan.valueIndex(point, a)]},
+                          {"unit", plan.axes[a].unit}});
+    return inputs;
+}
+
+Json runPoint(const SweepPlan& plan, const SweepOptions& options, std::size_t point) {
+    Json j;
+    j["index"] = point;
+    j["inputs"] = axesJson(plan, point);
+    std::vector<Override> overrides = options.baseOverrides;
+    const auto mine = plan.overrides(point);
+    overrides.insert(overrides.end(), mine.begin(), mine.end());
+    try {
+        const ModelSpec spec = readModelFile(options.model, defaultModelReader(), overrides);
+        const AnalysisResult r = runAnalysis(spec);
+        Json results = Json::object();
+        for (const auto& s : r.results) {
+            if (!std::isfinite(s.value))
+                throw AnalysisError("result " + s.name + " is not finite (the analysis diverged)");
+            results[s.name] = {{"value", s.value}, {"unit", s.unit}};
+        }
+        j["status"] = "ok";
+        j["diagnostic"] = "";
+        j["results"] = results;
+    } catch (const SpecError& e) {
+        j["status"] = "bad_input";
+        j["diagnostic"] = e.formatted();
+        j["results"] = Json::object();
+    } catch (const AnalysisError& e) {
+        j["status"] = "failed";
+        j["diagnostic"] = e.what();
+        j["results"] = Json::object();
+    }
+    return j;
+}
+
+/// Reads a point file; empty when absent or unreadable.
+Json readPoint(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) return Json();
+    try {
+        return Json::parse(in);
+    } catch (const std::exception&) {
+        return Json();  // a damaged file is recomputed
+    }
+}
+
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
+    return out + "\"";
+}
+
+/// The table from point files, in point order.
+std::string formatTable(const std::vector<Json>& points) {
+    std::vector<std::pair<std::string, std::string>> inputs;  // path, unit
+    std::map<std::string, std::string> results;               // name → unit (sorted)
+    for (const auto& p : points) {
+        if (inputs.empty())
+            for (const auto& in : p["inputs"]) inputs.emplace_back(in["path"], in["unit"]);
+        for (auto it = p["results"].begin(); it != p["results"].end(); ++it)
+            results.emplace(it.key(), it.value()["unit"].get<std::string>());
+    }
+    std::string out = "index[1]";
+    for (const auto& in : inputs) out += "," + in.first + "[" + (in.second.empty() ? "SI" : in.second) + "]";
+    out += ",status";
+    for (const auto& r : results) out += "," + r.first + "[" + r.second + "]";
+    out += ",diagnostic\n";
+    for (const auto& p : points) {
+        out += std::to_string(p["index"].get<std::size_t>());
+        for (const auto& in : p["inputs"]) out += "," + formatDouble(in["value"].get<double>());
+        out += "," + p["status"].get<std::string>();
+        for (const auto& r : results) {
+            out += ",";
+            if (p["results"].contains(r.first)) out += formatDouble(p["results"][r.first]["value"].get<double>());
+        }
+        out += "," + csvField(p["diagnostic"].get<std::string>()) + "\n";
+    }
+    return out;
+}
+
+SweepSummary writeTable(const std::string& outDir, std::vector<Json> points, SweepSummary summary) {
+    std::sort(points.begin(), points.end(),
+              [](const Json& a, const Json& b) { return a["index"].get<std::size_t>() < b["index"].get<std::size_t>(); });
+    for (const auto& p : points) summary.failed += p["status"] != "ok";
+    summary.total = points.size();
+    writeFileAtomically(outDir + "/sweep.csv", formatTable(points));
+    summary.files.push_back(outDir + "/sweep.csv");
+    return summary;
+}
+
+}  // namespace
+
+std::size_t SweepPlan::valueIndex(std::size_t point, std::size_t axis) const {
+    if (!cartesian) return point;
+    // Row-major: the last axis varies fastest.
+    std::size_t stride = 1;
+    for (std::size_t a = axes.size(); a-- > axis + 1;) stride *= axes[a].values.size();
+    return (point / stride) % axes[axis].values.size();
+}
+
+std::vector<Override> SweepPlan::overrides(std::size_t point) const {
+    std::vector<Override> out;
+    for (std::size_t a = 0; a < axes.size(); ++a)
+        out.push_back({axes[a].path, valueText(axes[a].values[valueIndex(point, a)], axes[a].unit)});
+    return out;
+}
+
+SweepAxis parseGrid(const std::string& text) {
+    const auto [path, parts] = splitSpec("--grid", text);
+    if (parts.size() != 3) throw optionError("--grid", text, "expected path=a:b:n");
+    const auto [a, unitA] = splitValue("--grid", text, parts[0]);
+    const auto [b, unitB] = splitValue("--grid", text, parts[1]);
+    if (!unitB.empty() && unitB != unitA)
+        throw optionError("--grid", text, "both ends must be in the same unit ('" + unitA + "' and '" + unitB + "')");
+    char* end = nullptr;
+    const long n = std::strtol(parts[2].c_str(), &end, 10);
+    if (*end != '\0' || n < 1 || n > 100000) throw optionError("--grid", text, "n must be a whole number 1..100000");
+    SweepAxis axis{path, unitA, {}};
+    for (long i = 0; i < n; ++i) axis.values.push_back(n == 1 ? a : a + (b - a) * double(i) / double(n - 1));
+    return axis;
+}
+
+SweepAxis parseRange(const std::string& text) {
+    const auto [path, parts] = splitSpec("--range", text);
+    if (parts.size() != 2) throw optionError("--range", text, "expected path=a:b");
+    const auto [a, unitA] = splitValue("--range", text, parts[0]);
+    const auto [b, unitB] = splitValue("--range", text, parts[1]);
+    if (!unitB.empty() && unitB != unitA)
+        throw optionError("--range", text, "both ends must be in the same unit ('" + unitA + "' and '" + unitB + "')");
+    return {path, unitA, {a, b}};
+}
+
+SweepPlan makeGrid(std::vector<SweepAxis> axes) {
+    SweepPlan plan;
+    plan.cartesian = true;
+    plan.count = axes.empty() ? 0 : 1;
+    for (const auto& a : axes) plan.count *= a.values.size();
+    plan.axes = std::move(axes);
+    return plan;
+}
+
+SweepPlan makeLatinHypercube(std::vector<SweepAxis> ranges, std::size_t n, unsigned long seed) {
+    // mt19937_64 and our own mapping to [0, 1): the standard distributions
+    // are not specified bit for bit, the engine is.
+    std::mt19937_64 rng(seed);
+    auto uniform = [&rng] { return double(rng() >> 11) * 0x1.0p-53; };
+    SweepPlan plan;
+    plan.cartesian = false;
+    plan.count = n;
+    for (auto& r : ranges) {
+        const double lo = r.values[0], hi = r.values[1];
+        std::vector<std::size_t> strata(n);
+        std::iota(strata.begin(), strata.end(), 0);
+        for (std::size_t i = n; i > 1; --i) std::swap(strata[i - 1], strata[rng() % i]);  // Fisher-Yates
+        r.values.clear();
+        for (std::size_t i = 0; i < n; ++i) r.values.push_back(lo + (hi - lo) * (double(strata[i]) + uniform()) / double(n));
+    }
+    plan.axes = std::move(ranges);
+    return plan;
+}
+
+SweepSummary runSweep(const SweepPlan& plan, const SweepOptions& options,
+                      const std::function<void(std::size_t, std::size_t, std::size_t)>& progress) {
+    ensureDirectory(options.outDir + "/points");
+    ElementRegistry::instance();  // built once, before the workers read it
+
+    std::vector<std::size_t> mine;
+    for (std::size_t i = 0; i < plan.count; ++i)
+        if (i % options.shardCount == options.shardIndex) mine.push_back(i);
+
+    SweepSummary summary;
+    std::vector<Json> points(mine.size());
+    std::vector<std::size_t> todo;
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+        Json cached = readPoint(pointFile(options.outDir, mine[k]));
+        if (!cached.is_null() && cached.contains("inputs") && cached["inputs"] == axesJson(plan, mine[k]) &&
+            cached.contains("status") && cached.contains("results") && cached.contains("diagnostic")) {
+            points[k] = cached;
+            ++summary.resumed;
+        } else {
+            todo.push_back(k);
+        }
+    }
+
+    std::atomic<std::size_t> next{0};
+    std::mutex progressMutex;
+    std::size_t done = 0, failed = 0;
+    std::exception_ptr fatal;
+    auto worker = [&] {
+        for (std::size_t t; (t = next++) < todo.size();) {
+            const std::size_t k = todo[t];
+            try {
+                points[k] = runPoint(plan, options, mine[k]);
+                writeFileAtomically(pointFile(options.outDir, mine[k]), points[k].dump(1) + "\n");
+            } catch (...) {
+                std::lock_guard<std::mutex> lock(progressMutex);
+                if (!fatal) fatal = std::current_exception();
+                next = todo.size();
+                return;
+            }
+            std::lock_guard<std::mutex> lock(progressMutex);
+            ++done;
+            failed += points[k]["status"] != "ok";
+            if (progress) progress(done, todo.size(), failed);
+        }
+    };
+    const unsigned jobs = std::max(1u, std::min<unsigned>(options.jobs, static_cast<unsigned>(std::max<std::size_t>(1, todo.size()))));
+    std::vector<std::thread> threads;
+    for (unsigned j = 1; j < jobs; ++j) threads.emplace_back(worker);
+    worker();
+    for (auto& t : threads) t.join();
+    if (fatal) std::rethrow_exception(fatal);
+    summary.run = todo.size();
+    return writeTable(options.outDir, points, summary);
+}
+
+SweepSummary mergeSweeps(const std::vector<std::string>& dirs, const std::string& outDir) {
+    ensureDirectory(outDir + "/points");
+    std::map<std::size_t, Json> byIndex;
+    for (const auto& dir : dirs) {
+        std::error_code ec;
+        if (!std::filesystem::is_directory(dir + "/points", ec))
+            throw SpecError({dir, 1, 1}, "<dir>", "not a sweep directory (no points/)");
+        for (const auto& entry : std::filesystem::directory_iterator(dir + "/points")) {
+            if (entry.path().extension() != ".json") continue;
+            Json p = readPoint(entry.path().string());
+            if (p.is_null() || !p.contains("index"))
+                throw SpecError({entry.path().string(), 1, 1}, "<file>", "not a sweep point file");
+            const std::size_t index = p["index"];
+            auto it = byIndex.find(index);
+            if (it != byIndex.end() && it->second["inputs"] != p["inputs"])
+                throw SpecError({entry.path().string(), 1, 1}, "inputs",
+                                "point " + std::to_string(index) + " has different inputs in two parts");
+            byIndex[index] = p;
+        }
+    }
+    std::vector<Json> points;
+    for (auto& kv : byIndex) {
+        writeFileAtomically(pointFile(outDir, kv.first), kv.second.dump(1) + "\n");
+        points.push_back(kv.second);
+    }
+    SweepSummary summary;
+    summary.resumed = points.size();
+    return writeTable(outDir, points, summary);
+}
+
+}  // namespace milldyn

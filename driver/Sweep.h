@@ -1,0 +1,71 @@
+#pragma once
+// Parameter sweeps: many runs of one model with `--set` values taken from a
+// grid or a Latin hypercube, on all cores (one Simbody system per worker,
+// never shared), resumable, and shardable across machines.
+//
+// Each point's outcome is written as DIR/points/NNNNNN.json as soon as it
+// finishes (atomically), so an interrupted sweep resumes where it stopped
+// and `milldyn merge` can join the parts of a sharded one. The table
+// DIR/sweep.csv is rebuilt from those files in point order, so it is the
+// same byte for byte whatever the number of jobs or shards.
+
+#include "driver/ModelFile.h"
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace milldyn {
+
+/// One swept key: its model-file path and the value text of every point
+/// ("12.5 N*m"); `unit` is the unit the values were written in ("" for SI).
+struct SweepAxis {
+    std::string path;
+    std::string unit;
+    std::vector<double> values;  ///< in `unit`
+};
+
+struct SweepPlan {
+    std::vector<SweepAxis> axes;
+    /// Number of points; point i takes axes[a].values[pointValue(i, a)].
+    std::size_t count = 0;
+    bool cartesian = true;  ///< grid (product of axes) or LHS (axes side by side)
+
+    /// Index into axes[a].values of point i.
+    std::size_t valueIndex(std::size_t point, std::size_t axis) const;
+    /// The --set overrides of point i.
+    std::vector<Override> overrides(std::size_t point) const;
+};
+
+/// "path=a:b:n" → an axis of n evenly spaced values from a to b (units
+/// allowed, the same on both ends). Throws SpecError located at the option.
+SweepAxis parseGrid(const std::string& text);
+/// "path=a:b" → a range for a Latin hypercube.
+SweepAxis parseRange(const std::string& text);
+/// n points of a Latin hypercube over the ranges (deterministic for a seed).
+SweepPlan makeLatinHypercube(std::vector<SweepAxis> ranges, std::size_t n, unsigned long seed);
+SweepPlan makeGrid(std::vector<SweepAxis> axes);
+
+struct SweepOptions {
+    std::string model;
+    std::vector<Override> baseOverrides;  ///< the user's own --set
+    unsigned jobs = 1;
+    std::size_t shardIndex = 0, shardCount = 1;  ///< this process runs points with i % count == index
+    std::string outDir;
+};
+
+struct SweepSummary {
+    std::size_t run = 0, resumed = 0, failed = 0, total = 0;
+    std::vector<std::string> files;
+};
+
+/// Runs (or resumes) the sweep and writes the table. `progress(done, total)`
+/// is called from worker threads (serialised).
+SweepSummary runSweep(const SweepPlan& plan, const SweepOptions& options,
+                      const std::function<void(std::size_t, std::size_t, std::size_t)>& progress = {});
+
+/// Joins the point files of several sweep directories into `outDir`.
+SweepSummary mergeSweeps(const std::vector<std::string>& dirs, const std::string& outDir);
+
+}  // namespace milldyn
