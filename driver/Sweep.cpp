@@ -53,6 +53,12 @@ std::pair<std::string, std::vector<std::string>> splitSpec(const std::string& op
     return {text.substr(0, eq), parts};
 }
 
+std::string formatSignificant(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.12g", v);
+    return buf;
+}
+
 std::string valueText(double v, const std::string& unit) {
     return formatDouble(v) + (unit.empty() ? "" : " " + unit);
 }
@@ -187,7 +193,11 @@ SweepAxis parseGrid(const std::string& text) {
     const long n = std::strtol(parts[2].c_str(), &end, 10);
     if (*end != '\0' || n < 1 || n > 100000) throw optionError("--grid", text, "n must be a whole number 1..100000");
     SweepAxis axis{path, unitA, {}};
-    for (long i = 0; i < n; ++i) axis.values.push_back(n == 1 ? a : a + (b - a) * double(i) / double(n - 1));
+    // 12 significant digits: 0.1:0.5:3 gives 0.3, not 0.30000000000000004.
+    for (long i = 0; i < n; ++i) {
+        const double v = n == 1 ? a : a + (b - a) * double(i) / double(n - 1);
+        axis.values.push_back(std::stod(formatSignificant(v)));
+    }
     return axis;
 }
 
