@@ -1,6 +1,7 @@
 #include "driver/SceneBuilder.h"
 
 #include "plugins/ElementRegistry.h"
+#include "plugins/EnergyMeter.h"
 
 #include <stdexcept>
 
@@ -43,6 +44,10 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
             throw SpecError(e.where, e.name, err.what());
         }
     }
+    // Last, so that it sees every element's energy flow.
+    auto* meter = new EnergyMeter(scene->forces(), scene->energyFlows());
+    SimTK::Force::Custom meterForce(scene->forces(), meter);
+    scene->setEnergyMeter(meter);
     scene->system().realizeTopology();
     return scene;
 }

@@ -111,6 +111,9 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
                     [impl, mobod](const SimTK::State& s) {
                         return impl->calcTorque(s) * pinSpeed(s, mobod);
                     }});
+    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source, [impl, mobod](const SimTK::State& s) {
+                             return impl->calcTorque(s) * pinSpeed(s, mobod);
+                         }});
     scene.note("force " + spec.name + " (InductionMotor, " + spec.text("law") + ")",
                "drives body " + shaft->name);
 }

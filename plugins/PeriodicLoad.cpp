@@ -99,6 +99,8 @@ void buildPeriodicLoad(const ElementSpec& spec, Scene& scene) {
                     [impl](const SimTK::State& s) { return impl->calcTotalTorque(s); }});
     scene.addProbe({spec.name + ".power", "W", ProbeRole::ResistancePower, SimTK::Stage::Velocity,
                     [impl](const SimTK::State& s) { return impl->calcAbsorbedPower(s); }});
+    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load,
+                         [impl](const SimTK::State& s) { return impl->calcAbsorbedPower(s); }});
     scene.note("force " + spec.name + " (PeriodicLoad, " + std::to_string(p.rows) + " rows, " +
                    spec.text("arrangement") + ")",
                "loads " + std::to_string(bodies.size()) + " bod" + (bodies.size() == 1 ? "y" : "ies"));

@@ -87,6 +87,9 @@ void buildResistanceTorque(const ElementSpec& spec, Scene& scene) {
                     [impl, mobod](const SimTK::State& s) {
                         return impl->calcTorque(s) * pinSpeed(s, mobod);
                     }});
+    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load, [impl, mobod](const SimTK::State& s) {
+                             return impl->calcTorque(s) * pinSpeed(s, mobod);
+                         }});
     if (p.feedStartTime > 0)
         scene.addSwitchEvent({Scene::SwitchEvent::Kind::LoadOn, p.feedStartTime, spec.name + " feed opened",
                               [impl](SimTK::State& s) { impl->setFeeding(s, true); }});

@@ -14,6 +14,8 @@
 
 namespace milldyn {
 
+class EnergyMeter;
+
 /// What a probe measures, so that analyses can find, for example, every
 /// resistance torque without knowing the element types.
 enum class ProbeRole {
@@ -33,6 +35,16 @@ struct Probe {
     ProbeRole role = ProbeRole::Generic;
     SimTK::Stage stage = SimTK::Stage::Dynamics;
     std::function<double(const SimTK::State&)> value;
+};
+
+/// A power flow an element declares for the energy balance: a source feeds
+/// the mechanical system (motor), a load takes useful work out (grinding),
+/// a dissipation turns it into heat (damper). [W], at Stage::Velocity.
+struct EnergyFlow {
+    enum class Kind { Source, Load, Dissipation };
+    std::string name;
+    Kind kind;
+    std::function<double(const SimTK::State&)> power;
 };
 
 /// A body the scene holds: a shaft on a pin, rotating about its z axis.
@@ -73,6 +85,12 @@ public:
 
     void addProbe(Probe probe) { m_probes.push_back(std::move(probe)); }
     const std::vector<Probe>& probes() const { return m_probes; }
+
+    void addEnergyFlow(EnergyFlow f) { m_energyFlows.push_back(std::move(f)); }
+    /// The meter integrating the flows (built last by the SceneBuilder).
+    void setEnergyMeter(const EnergyMeter* meter) { m_energyMeter = meter; }
+    const EnergyMeter* energyMeter() const { return m_energyMeter; }
+    const std::vector<EnergyFlow>& energyFlows() const { return m_energyFlows; }
 
     void addSteadyResidual(SteadyResidual r) { m_steadyResiduals.push_back(std::move(r)); }
     const std::vector<SteadyResidual>& steadyResiduals() const { return m_steadyResiduals; }
@@ -132,6 +150,8 @@ private:
     std::vector<SceneBody> m_bodies;
     std::vector<Probe> m_probes;
     std::vector<SteadyResidual> m_steadyResiduals;
+    std::vector<EnergyFlow> m_energyFlows;
+    const EnergyMeter* m_energyMeter = nullptr;
     struct ForceEntry {
         std::string type;
         SimTK::ForceIndex index;

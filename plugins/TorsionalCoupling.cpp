@@ -69,6 +69,11 @@ void buildTorsionalCoupling(const ElementSpec& spec, Scene& scene) {
                     [impl](const SimTK::State& s) { return impl->calcTwist(s); }});
     scene.addSteadyResidual({spec.name + ".twist_rate",
                              [impl](const SimTK::State& s) { return impl->calcTwistRate(s); }});
+    if (p.damping > 0)
+        scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation, [impl](const SimTK::State& s) {
+                                 const double rate = impl->calcTwistRate(s);
+                                 return impl->params().damping * rate * rate;
+                             }});
     scene.addSpeedRelation(from->name, to->name, p.ratio);
     scene.note("force " + spec.name + " (TorsionalCoupling)",
                "couples " + from->name + " to " + to->name);

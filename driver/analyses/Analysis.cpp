@@ -2,7 +2,9 @@
 
 #include "driver/ModelFile.h"
 #include "plugins/ElementRegistry.h"
+#include "plugins/EnergyMeter.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -218,6 +220,41 @@ Simulation::Watch speedWatch(const SimTK::MobilizedBody& body, double threshold,
 const SceneBody& scenarioBody(const Scene& scene, const ElementSpec& scenario, const std::string& key) {
     const std::string& name = scenario.text(key);
     return name.empty() ? scene.bodies().front() : *scene.findBody(name);
+}
+
+void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK::State& end,
+                      AnalysisResult& result) {
+    const EnergyMeter* meter = scene.energyMeter();
+    if (!meter) return;
+    const SimTK::MultibodySystem& system = scene.system();
+    system.realize(start, SimTK::Stage::Dynamics);
+    system.realize(end, SimTK::Stage::Dynamics);
+    double sources = 0, loads = 0, dissipated = 0;
+    for (std::size_t i = 0; i < meter->flows().size(); ++i) {
+        // The meter's integrals start at 0 with the run; differences keep
+        // this right for a run that starts from a later state.
+        const double w = meter->work(end, i) - meter->work(start, i);
+        switch (meter->flows()[i].kind) {
+            case EnergyFlow::Kind::Source: sources += w; break;
+            case EnergyFlow::Kind::Load: loads += w; break;
+            case EnergyFlow::Kind::Dissipation: dissipated += w; break;
+        }
+    }
+    const double dKE = system.calcKineticEnergy(end) - system.calcKineticEnergy(start);
+    const double dPE = system.calcPotentialEnergy(end) - system.calcPotentialEnergy(start);
+    const double residual = dKE + dPE - (sources - loads - dissipated);
+    const double scale = std::max({std::abs(sources), std::abs(loads) + std::abs(dissipated),
+                                   system.calcKineticEnergy(start), system.calcKineticEnergy(end),
+                                   std::numeric_limits<double>::min()});
+    result.results.push_back({"energy_from_sources", sources, "J", "work of the drives"});
+    result.results.push_back({"energy_to_loads", loads, "J", "work taken by the loads"});
+    result.results.push_back({"energy_dissipated", dissipated, "J", "heat in the dampers"});
+    result.results.push_back({"kinetic_energy_change", dKE, "J", "end minus start"});
+    result.results.push_back({"potential_energy_change", dPE, "J", "end minus start (springs)"});
+    result.results.push_back({"energy_balance_residual", residual, "J",
+                              "dKE + dPE - (sources - loads - dissipated): the integration error"});
+    result.results.push_back({"energy_balance_relative", residual / scale, "1",
+                              "the residual over the largest energy of the run"});
 }
 
 void addDefaultPlots(AnalysisResult& result) {

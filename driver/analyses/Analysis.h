@@ -99,6 +99,12 @@ Simulation::Watch speedWatch(const SimTK::MobilizedBody& body, double threshold,
 /// The body a scenario names under `key`, or the first body when unset.
 const SceneBody& scenarioBody(const Scene& scene, const ElementSpec& scenario, const std::string& key);
 
+/// Adds the energy balance of a run from `start` to `end` (the work of every
+/// source, load and dissipation, the changes of kinetic and potential
+/// energy, and the residual of ΔKE + ΔPE = W_sources − W_loads − W_dissipated).
+void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK::State& end,
+                      AnalysisResult& result);
+
 /// Adds the usual plots: every speed column, every torque column.
 void addDefaultPlots(AnalysisResult& result);
 

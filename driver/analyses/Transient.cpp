@@ -32,6 +32,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
 
     Simulation sim(*scene, spec.integrator);
     sim.initialize(state);
+    const SimTK::State first = sim.state();
+    SimTK::State last = first;
 
     // Summary at the last sample before the first switch-off: steady running.
     SimTK::State steady = state;
@@ -39,6 +41,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
     std::vector<double> peakCoupling(scene->probes().size(), 0.0);
     auto onSample = [&](const SimTK::State& s) {
         table.record(s);
+        last = s;
         if (s.getTime() <= switchTime) steady = s;
         peakDrive = std::max(peakDrive, std::abs(sumProbes(*scene, s, ProbeRole::DriveTorque)));
         for (std::size_t i = 0; i < scene->probes().size(); ++i)
@@ -94,6 +97,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
         result.notes.push_back(runoutName + " did not come to rest before end_time");
     }
 
+    addEnergyBalance(*scene, first, last, result);
     addDefaultPlots(result);
     return result;
 }
