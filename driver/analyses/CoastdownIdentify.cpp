@@ -84,10 +84,15 @@ public:
         sim.initialize(steady);
         std::unique_ptr<SampleTable> table;
         if (record) table = std::make_unique<SampleTable>(*scene, *record);
+        const SimTK::State first = sim.state();
+        SimTK::State last = first;
         auto onSample = [&](const SimTK::State& s) {
-            if (table) table->record(s);
+            if (!table) return;
+            table->record(s);
+            last = s;
         };
         const auto stop = sim.run(endLimit, spec.outputs.sampleInterval, onSample, &watch);
+        if (record) addEnergyBalance(*scene, first, last, *record);
         const RunStatistics st = sim.statistics();
         m_statistics.integrator = st.integrator;
         m_statistics.accuracy = st.accuracy;
