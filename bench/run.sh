@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Benchmarks, run on demand (never as timed tests): the burr-mill start by
+# milldyn's integrators, by hand with Boost.Odeint and with SciPy, all at one
+# tolerance, in one run; errors against a tight Odeint reference and speed
+# ratios against Odeint dopri5 and the best SciPy method.
+#   bench/run.sh [TOL] [REPEATS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tol="${1:-1e-6}"
+repeats="${2:-5}"
+scripts/install-deps.sh
+missing=()
+for p in libboost-dev python3-scipy python3-numpy; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
+fi
+cmake -S . -B build -DMILLDYN_BENCH=ON >/dev/null
+cmake --build build -j"$(nproc)" --target bench_odeint_burr bench_milldyn_burr
+out=$(mktemp)
+build/bench_odeint_burr 1e-12 1 | head -n 1 | sed 's/odeint_dopri5/reference/' > "$out"
+build/bench_odeint_burr "$tol" "$repeats" >> "$out"
+/usr/bin/python3 bench/scipy_burr.py "$tol" 3 >> "$out"
+build/bench_milldyn_burr "$tol" "$repeats" >> "$out"
+/usr/bin/python3 bench/report.py "$out"
