@@ -14,7 +14,7 @@ supp="$PWD/tests/sanitizers"
 cd build-asan
 # Suppressions cover defects inside Debian's Simbody only; each is explained
 # in its file. Sanitized runs are ~10x slower, hence the longer timeout.
-export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:fast_unwind_on_malloc=0
 export LSAN_OPTIONS="suppressions=$supp/lsan.supp"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$supp/ubsan.supp"
 ctest --output-on-failure -j"$(nproc)" --timeout 3600
