@@ -11,6 +11,8 @@
 #include "driver/ModelFile.h"
 #include "driver/analyses/Analysis.h"
 
+#include "tests/driver/ReaderTestHelpers.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -158,49 +160,24 @@ use_scenario: one
 
 /// `text` with the one occurrence of `from` replaced by `to`.
 std::string replaced(const std::string& text, const std::string& from, const std::string& to) {
-    const auto pos = text.find(from);
-    if (pos == std::string::npos || text.find(from, pos + 1) != std::string::npos) {
-        ADD_FAILURE() << "'" << from << "' must occur exactly once in the test text";
-        return text;
-    }
-    std::string out = text;
-    out.replace(pos, from.size(), to);
-    return out;
+    return test::replacedIn(text, from, to);
 }
 
 ModelSpec read(const std::string& text, const std::vector<Override>& overrides = {}) {
-    return readModelText(text, kFile, defaultModelReader(), overrides);
+    return test::readText(kFile, text, overrides);
 }
 
 /// The SpecError reading `text` throws; a test failure if it throws none.
 SpecError readError(const std::string& text, const std::vector<Override>& overrides = {}) {
-    try {
-        read(text, overrides);
-    } catch (const SpecError& e) {
-        return e;
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << "expected SpecError, got std::exception: " << e.what();
-        return SpecError({}, "", "<wrong exception>");
-    }
-    ADD_FAILURE() << "expected SpecError, the text was accepted";
-    return SpecError({}, "", "<nothing thrown>");
+    return test::readErrorOf(kFile, text, overrides);
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using test::contains;
 
 /// Checks location, key, reason and the one-line formatted diagnostic.
 void expectError(const SpecError& e, const std::string& file, int line, int column, const std::string& key,
                  const std::string& reasonPart) {
-    if (e.where().file.empty() && e.what()[0] == '<') return;  // readError reported the failure already
-    EXPECT_EQ(e.where().file, file) << e.formatted();
-    EXPECT_EQ(e.where().line, line) << e.formatted();
-    EXPECT_EQ(e.where().column, column) << e.formatted();
-    EXPECT_EQ(e.key(), key) << e.formatted();
-    EXPECT_TRUE(contains(e.what(), reasonPart)) << "reason '" << e.what() << "' lacks '" << reasonPart << "'";
-    const std::string expected = file + ":" + std::to_string(line) + ":" + std::to_string(column) +
-                                 ": error: " + (key.empty() ? "<document>" : key) + ": " + e.what();
-    EXPECT_EQ(e.formatted(), expected);
-    EXPECT_FALSE(contains(e.formatted(), "\n"));
+    test::expectSpecError(e, file, line, column, key, reasonPart);
 }
 
 void expectError(const SpecError& e, int line, int column, const std::string& key, const std::string& reasonPart) {
