@@ -2,6 +2,7 @@
 
 #include "driver/ModelFile.h"
 #include "driver/SceneBuilder.h"
+#include "driver/PluginLoader.h"
 #include "driver/Sweep.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
@@ -31,7 +32,8 @@ const char* kUsage =
     "  milldyn sweep MODEL.yaml (--grid path=a:b:n... | --lhs N --range path=a:b...) [--seed S]\n"
     "                           [--jobs N] [--shard i/N] [--out DIR] [--set path=value]...\n"
     "  milldyn merge DIR... --out DIR\n"
-    "  milldyn --version | --help\n";
+    "  milldyn --version | --help\n"
+    "  any command: --plugin LIB.so (repeatable) loads element types from a plugin library\n";
 
 class UsageError : public std::runtime_error {
 public:
@@ -47,6 +49,7 @@ struct Arguments {
     bool json = false;
     bool quiet = false;
     std::vector<std::string> positional;  ///< after the model (merge: directories)
+    std::vector<std::string> plugins;     ///< --plugin libraries, loaded first
     std::vector<std::string> grids, ranges;
     std::size_t lhs = 0;
     unsigned long seed = 1;
@@ -80,6 +83,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
         else if (arg == "--scenario") a.overrides.push_back({"use_scenario", value(i)});
         else if (arg == "--filter") a.filter = value(i);
         else if (arg == "--grid") a.grids.push_back(value(i));
+        else if (arg == "--plugin") a.plugins.push_back(value(i));
         else if (arg == "--range") a.ranges.push_back(value(i));
         else if (arg == "--lhs") a.lhs = parseCount(arg, value(i), 1000000);
         else if (arg == "--seed") a.seed = parseCount(arg, value(i), 4294967295ULL);
@@ -262,6 +266,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
             return 0;
         }
         const Arguments a = parseArguments(args);
+        for (const auto& p : a.plugins) loadPlugin(p);
         if (a.command == "run") return commandRun(a, out, err);
         if (a.command == "info") return commandInfo(a, out);
         if (a.command == "validate") return commandValidate(a, out);

@@ -1,0 +1,41 @@
+#include "driver/PluginLoader.h"
+
+#include "plugins/ElementRegistry.h"
+
+#include <dlfcn.h>
+
+#include <stdexcept>
+
+namespace milldyn {
+
+void loadPlugin(const std::string& path) {
+    const SourceLocation where{"<--plugin " + path + ">", 1, 1};
+    auto fail = [&](const std::string& reason) { return SpecError(where, "--plugin", reason); };
+    // RTLD_NOW: a missing symbol is an error here, not a crash mid-run. The
+    // library stays loaded for the life of the process (its code builds
+    // forces Simbody keeps).
+    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) throw fail(std::string("cannot load: ") + ::dlerror());
+    using AbiFn = int (*)();
+    using VersionFn = const char* (*)();
+    using RegisterFn = void (*)(ElementRegistry&);
+    auto abi = reinterpret_cast<AbiFn>(::dlsym(handle, "milldyn_plugin_abi_version"));
+    auto simbody = reinterpret_cast<VersionFn>(::dlsym(handle, "milldyn_plugin_simbody_version"));
+    auto reg = reinterpret_cast<RegisterFn>(::dlsym(handle, "milldyn_register_elements"));
+    if (!abi || !simbody || !reg)
+        throw fail("not a milldyn plugin (no milldyn_plugin_abi_version / milldyn_plugin_simbody_version / "
+                   "milldyn_register_elements; see plugins/PluginApi.h)");
+    if (abi() != kPluginAbiVersion)
+        throw fail("built against plugin ABI " + std::to_string(abi()) + ", this milldyn has ABI " +
+                   std::to_string(kPluginAbiVersion) + ": rebuild the plugin");
+    if (std::string(simbody()) != MILLDYN_SIMBODY_VERSION)
+        throw fail(std::string("built against Simbody ") + simbody() + ", this milldyn uses Simbody " +
+                   MILLDYN_SIMBODY_VERSION + ": rebuild the plugin");
+    try {
+        reg(ElementRegistry::instance());
+    } catch (const std::invalid_argument& e) {
+        throw fail(e.what());
+    }
+}
+
+}  // namespace milldyn
