@@ -92,24 +92,9 @@ double klossTorque(double omega) {
     return 2 * kBreakdownTorque / (s / kBreakdownSlip + kBreakdownSlip / s);
 }
 
-// One motor on one shaft.
-struct MotorOnShaft {
-    explicit MotorOnShaft(const InductionMotorParams& p, double J = kShaftInertia)
-        : shaft(rig.addShaft(J)),
-          motor(new InductionMotor(rig.forces(), shaft, p)),
-          force(rig.forces(), motor),
-          state(rig.defaultState()) {}
-
-    double torqueAt(double omega) {
-        test::setShaft(state, shaft, 0.0, omega);
-        return test::torqueOn(rig.system(), force, state, shaft);
-    }
-
-    ShaftSystem rig;
-    SimTK::MobilizedBody::Pin shaft;
-    InductionMotor* motor;  // owned by force
-    SimTK::Force::Custom force;
-    SimTK::State state;
+// One InductionMotor on one shaft (kShaftInertia unless given).
+struct MotorOnShaft : test::ElementOnShaft<InductionMotor, InductionMotorParams> {
+    explicit MotorOnShaft(const InductionMotorParams& p, double J = kShaftInertia) : ElementOnShaft(p, J) {}
 };
 
 // ---- 1. force vs closed form ------------------------------------------------
@@ -122,8 +107,8 @@ TEST(InductionMotorTest, LinearLawFollowsNameplateEquationFour) {
     EXPECT_NEAR(m.torqueAt(150.0), 0.0, kRoundingRelTolerance * 1500);
     EXPECT_NEAR(m.torqueAt(145.0), 50.0, kRoundingRelTolerance * 1500);
     EXPECT_NEAR(m.torqueAt(0.0), 1500.0, kRoundingRelTolerance * 1500);
-    EXPECT_NEAR(m.motor->linearStallTorque(), 1500.0, kRoundingRelTolerance * 1500);
-    EXPECT_NEAR(m.motor->linearSlope(), 10.0, kRoundingRelTolerance * 10);
+    EXPECT_NEAR(m.element->linearStallTorque(), 1500.0, kRoundingRelTolerance * 1500);
+    EXPECT_NEAR(m.element->linearSlope(), 10.0, kRoundingRelTolerance * 10);
 }
 
 TEST(InductionMotorTest, LinearLawUsesPrintedStallTorqueAndSlopeWhenBothGiven) {
@@ -165,7 +150,7 @@ TEST(InductionMotorTest, KlossTorquePeaksAtBreakdownTorqueAtBreakdownSlip) {
     const int n = 20000;
     for (int i = 0; i <= n; ++i) {
         const double w = kSynchronousSpeed * i / n;
-        const double M = m.motor->torqueAtSpeed(w);
+        const double M = m.element->torqueAtSpeed(w);
         if (M > maxTorque) { maxTorque = M; argMax = w; }
     }
     EXPECT_LE(maxTorque, kBreakdownTorque * (1 + kRoundingRelTolerance));
@@ -195,16 +180,16 @@ TEST(InductionMotorTest, KlossCurveMatchesTextbookFormAcrossSpeeds) {
 
 TEST(InductionMotorTest, SwitchedOffMotorAppliesNoTorque) {
     MotorOnShaft m(klossMotor());
-    EXPECT_TRUE(m.motor->isOn(m.state));
+    EXPECT_TRUE(m.element->isOn(m.state));
     // Realize with the supply on first, so a stale Dynamics cache would show.
     test::setShaft(m.state, m.shaft, 0.0, 100.0);
     EXPECT_GT(test::shaftAcceleration(m.rig.system(), m.state, m.shaft), 0.0);
-    m.motor->setOn(m.state, false);
-    EXPECT_FALSE(m.motor->isOn(m.state));
+    m.element->setOn(m.state, false);
+    EXPECT_FALSE(m.element->isOn(m.state));
     EXPECT_EQ(test::shaftAcceleration(m.rig.system(), m.state, m.shaft), 0.0);
     EXPECT_EQ(m.torqueAt(100.0), 0.0);
     EXPECT_EQ(m.torqueAt(0.0), 0.0);
-    m.motor->setOn(m.state, true);
+    m.element->setOn(m.state, true);
     EXPECT_NEAR(m.torqueAt(kRatedSpeed), kRatedTorque, kRoundingRelTolerance * kRatedTorque);
 }
 
@@ -255,7 +240,7 @@ TEST(InductionMotorTest, RunUpGainsMotorWorkAsKineticEnergyAndImpulseAsMomentum)
 TEST(InductionMotorTest, SwitchedOffShaftCoastsAtConstantSpeed) {
     MotorOnShaft m(klossMotor());
     test::setShaft(m.state, m.shaft, 0.0, kRatedSpeed);
-    m.motor->setOn(m.state, false);
+    m.element->setOn(m.state, false);
     std::vector<double> none;
     const SimTK::State end = test::integrateWithQuadrature(m.rig.system(), m.state, 0.5, 100, {}, none);
     EXPECT_EQ(test::shaftSpeed(end, m.shaft), kRatedSpeed);
@@ -390,7 +375,7 @@ TEST(InductionMotorTest, NeverSwitchingOffIsAccepted) {
     InductionMotorParams p = klossMotor();
     p.switchOffTime = std::numeric_limits<double>::infinity();
     MotorOnShaft m(p);
-    EXPECT_TRUE(m.motor->isOn(m.state));
+    EXPECT_TRUE(m.element->isOn(m.state));
 }
 
 // ---- 6. registry -----------------------------------------------------------

@@ -72,24 +72,9 @@ double loadTorque(double M0, double b2, double omega) {
 }
 
 // One load on one shaft.
-struct LoadOnShaft {
-    explicit LoadOnShaft(const ResistanceTorqueParams& p, double J = kShaftInertia)
-        : shaft(rig.addShaft(J)),
-          load(new ResistanceTorque(rig.forces(), shaft, p)),
-          force(rig.forces(), load),
-          state(rig.defaultState()) {}
-
-    /// The mobility torque on the shaft at speed ω (negative for ω > 0).
-    double torqueAt(double omega) {
-        test::setShaft(state, shaft, 0.0, omega);
-        return test::torqueOn(rig.system(), force, state, shaft);
-    }
-
-    ShaftSystem rig;
-    SimTK::MobilizedBody::Pin shaft;
-    ResistanceTorque* load;  // owned by force
-    SimTK::Force::Custom force;
-    SimTK::State state;
+// One ResistanceTorque on one shaft (kShaftInertia unless given).
+struct LoadOnShaft : test::ElementOnShaft<ResistanceTorque, ResistanceTorqueParams> {
+    explicit LoadOnShaft(const ResistanceTorqueParams& p, double J = kShaftInertia) : ElementOnShaft(p, J) {}
 };
 
 // ---- 1. force vs closed form ------------------------------------------------
@@ -138,7 +123,7 @@ TEST(ResistanceTorqueTest, FeedLawAddsCoefficientTimesFeedPerMinuteOverReduction
     LoadOnShaft m(paperFeed());
     // Far from standstill: Mc = 10 + 10/3 = 40/3 N*m (see paperFeed()).
     EXPECT_NEAR(m.torqueAt(50.0), -40.0 / 3, kRoundingRelTolerance * 40);
-    EXPECT_NEAR(m.load->constantPart(), 40.0 / 3, kRoundingRelTolerance * 40);
+    EXPECT_NEAR(m.element->constantPart(), 40.0 / 3, kRoundingRelTolerance * 40);
 }
 
 TEST(ResistanceTorqueTest, FeedLawRaisesFeedPerMinuteToTheExponent) {
@@ -165,14 +150,14 @@ TEST(ResistanceTorqueTest, FeedIsOffBeforeFeedStartTimeAndOnWhenOpened) {
     ResistanceTorqueParams p = paperFeed();
     p.feedStartTime = 1.5;
     LoadOnShaft m(p);
-    EXPECT_FALSE(m.load->isFeeding(m.state));
+    EXPECT_FALSE(m.element->isFeeding(m.state));
     // Only the idle part, 10 N*m. Realize before opening the feed, so a
     // stale Dynamics cache would show below.
     EXPECT_NEAR(m.torqueAt(50.0), -10.0, kRoundingRelTolerance * 10);
     EXPECT_NEAR(test::shaftAcceleration(m.rig.system(), m.state, m.shaft), -10.0 / kShaftInertia,
                 kSolverRelTolerance * 100);
-    m.load->setFeeding(m.state, true);
-    EXPECT_TRUE(m.load->isFeeding(m.state));
+    m.element->setFeeding(m.state, true);
+    EXPECT_TRUE(m.element->isFeeding(m.state));
     EXPECT_NEAR(test::shaftAcceleration(m.rig.system(), m.state, m.shaft),
                 -40.0 / 3 / kShaftInertia, kSolverRelTolerance * 140);
     EXPECT_NEAR(m.torqueAt(50.0), -40.0 / 3, kRoundingRelTolerance * 40);
@@ -180,7 +165,7 @@ TEST(ResistanceTorqueTest, FeedIsOffBeforeFeedStartTimeAndOnWhenOpened) {
 
 TEST(ResistanceTorqueTest, FeedIsOnFromTheStartWhenStartTimeIsZero) {
     LoadOnShaft m(paperFeed());
-    EXPECT_TRUE(m.load->isFeeding(m.state));
+    EXPECT_TRUE(m.element->isFeeding(m.state));
     EXPECT_NEAR(m.torqueAt(50.0), -40.0 / 3, kRoundingRelTolerance * 40);
 }
 

@@ -165,6 +165,29 @@ void expectInvalidArgumentNaming(const std::string& parameter, Make&& make) {
     }
 }
 
+/// One force element on one shaft of inertia J [kg*m^2], with a state to
+/// set speeds in: the fixture of the single-shaft element tests.
+template <class Element, class Params>
+struct ElementOnShaft {
+    ElementOnShaft(const Params& p, double J)
+        : shaft(rig.addShaft(J)),
+          element(new Element(rig.forces(), shaft, p)),
+          force(rig.forces(), element),
+          state(rig.defaultState()) {}
+
+    /// The mobility torque the element applies to the shaft at speed ω.
+    double torqueAt(double omega) {
+        setShaft(state, shaft, 0.0, omega);
+        return torqueOn(rig.system(), force, state, shaft);
+    }
+
+    ShaftSystem rig;
+    SimTK::MobilizedBody::Pin shaft;
+    Element* element;  // owned by force
+    SimTK::Force::Custom force;
+    SimTK::State state;
+};
+
 // ---- element specs as the model-file reader hands them over ---------------
 
 inline ParamValue number(double v) {
