@@ -71,7 +71,6 @@ double loadTorque(double M0, double b2, double omega) {
     return M0 * std::tanh(omega / kSmoothingSpeed) + b2 * omega;
 }
 
-// One load on one shaft.
 // One ResistanceTorque on one shaft (kShaftInertia unless given).
 struct LoadOnShaft : test::ElementOnShaft<ResistanceTorque, ResistanceTorqueParams> {
     explicit LoadOnShaft(const ResistanceTorqueParams& p, double J = kShaftInertia) : ElementOnShaft(p, J) {}
