@@ -74,7 +74,8 @@ public:
         ModelSpec spec;
         spec.file = m_file;
         checkKeys(root, "", {"format_version", "name", "description", "fidelity", "bodies", "elements",
-                             "scenario", "scenarios", "use_scenario", "integrator", "outputs"});
+                             "scenario", "scenarios", "use_scenario", "integrator", "outputs",
+                             "gravity"});
         const YAML::Node version = required(root, "format_version", "");
         const double versionNumber = readNumber(version, "format_version", "1");
         if (!(versionNumber >= 1 && versionNumber <= 1e6) || versionNumber != std::floor(versionNumber))
@@ -91,6 +92,7 @@ public:
 
         if (root["fidelity"]) readFidelity(root["fidelity"], spec);
         readBodies(required(root, "bodies", ""), spec);
+        if (root["gravity"]) readVector3(root["gravity"], "gravity", "m/s^2", spec.gravity);
         if (root["elements"]) readElements(root["elements"], spec);
         readScenarios(root, spec);
         if (!spec.fidelity.empty()) keepSelectedFidelity(spec);
@@ -390,7 +392,8 @@ private:
             b.where = where(n);
             b.name = scalar(required(n, "name", "bodies."), "name");
             const std::string prefix = b.name + ".";
-            checkKeys(n, prefix, {"name", "inertia", "mass", "joint", "initial_angle", "initial_speed", "fidelity"});
+            checkKeys(n, prefix, {"name", "inertia", "mass", "mass_centre", "joint", "initial_angle", "initial_speed",
+                                  "fidelity"});
             b.fidelity = readMemberLevels(n, prefix, spec);
             if (b.name == "ground") throw error(n["name"], "name", "'ground' is reserved for the fixed frame");
             if (spec.findBody(b.name)) throw error(n["name"], "name", "a body named '" + b.name + "' exists already");
@@ -402,6 +405,18 @@ private:
             if (n["mass"]) {
                 b.mass = readNumber(n["mass"], prefix + "mass", "kg");
                 if (b.mass < 0) throw error(n["mass"], prefix + "mass", "mass must be >= 0 kg, got " + formatNumber(b.mass));
+            }
+            if (n["mass_centre"]) {
+                const YAML::Node c = n["mass_centre"];
+                readVector3(c, prefix + "mass_centre", "m", b.massCentre);
+                const double offAxis2 = b.massCentre[0] * b.massCentre[0] + b.massCentre[1] * b.massCentre[1];
+                if (offAxis2 > 0 && !(b.mass > 0))
+                    throw error(c, prefix + "mass_centre", "a mass centre off the joint axis needs a mass > 0 kg");
+                if (!(b.inertia > b.mass * offAxis2))
+                    throw error(c, prefix + "mass_centre",
+                                "inertia about the joint axis (" + formatNumber(b.inertia) +
+                                    " kg*m^2) must exceed mass*distance^2 = " + formatNumber(b.mass * offAxis2) +
+                                    " kg*m^2 (parallel-axis theorem)");
             }
             if (n["initial_angle"]) b.initialAngle = readNumber(n["initial_angle"], prefix + "initial_angle", "rad");
             if (n["initial_speed"]) b.initialSpeed = readNumber(n["initial_speed"], prefix + "initial_speed", "rad/s");
@@ -425,12 +440,15 @@ private:
                 throw error(n["parent"], prefix + "joint.parent",
                             "no body named '" + j.parent + "' defined above this one (parents come first)");
         }
-        if (n["location"]) {
-            const YAML::Node loc = n["location"];
-            requireList(loc, prefix + "joint.location");
-            if (loc.size() != 3) throw error(loc, prefix + "joint.location", "expected [x, y, z] lengths");
-            for (std::size_t i = 0; i < 3; ++i) j.location[i] = readNumber(loc[i], prefix + "joint.location", "m");
-        }
+        if (n["location"]) readVector3(n["location"], prefix + "joint.location", "m", j.location);
+    }
+
+    /// `[x, y, z]` in `unit`, each entry finite.
+    void readVector3(const YAML::Node& n, const std::string& key, const std::string& unit,
+                     std::array<double, 3>& v) const {
+        requireList(n, key);
+        if (n.size() != 3) throw error(n, key, "expected [x, y, z] in " + unit);
+        for (std::size_t i = 0; i < 3; ++i) v[i] = readNumber(n[i], key, unit);
     }
 
     void readElements(const YAML::Node& list, ModelSpec& spec) const {
