@@ -54,6 +54,14 @@ void Simulation::initialize(const SimTK::State& start) {
     // Switchings due at the start time take effect before the first step.
     for (const auto& e : m_scene.switchEvents())
         if (e.time <= state.getTime()) e.apply(state);
+    // Kept reactions (journal loads) start consistent with the start state,
+    // lagged or not: a lagged load of 0 would give the first step no friction.
+    for (int k = 0; !m_scene.laggedValues().empty(); ++k) {
+        double change = 0;
+        for (const auto& v : m_scene.laggedValues()) change = std::max(change, v.refresh(state));
+        if (!(change > kLaggedTolerance)) break;
+        if (k >= 50) throw AnalysisError("kept reactions do not converge at the start");
+    }
     m_integrator = makeIntegrator(m_scene.system(), m_settings.name);
     m_integrator->setAccuracy(m_settings.accuracy);
     m_integrator->setInternalStepLimit(kInternalStepLimit);
