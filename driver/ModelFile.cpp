@@ -683,6 +683,8 @@ private:
         std::error_code ec;
         if (std::filesystem::is_directory(file, ec))
             throw error(fileNode, "include", "'" + file + "' is a directory, not a part file");
+        if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+            throw error(fileNode, "include", "'" + file + "' is not a regular file");  // a FIFO or device would hang
         std::ifstream in(file, std::ios::binary);
         if (!in)
             throw error(fileNode, "include",

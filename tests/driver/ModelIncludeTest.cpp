@@ -215,6 +215,17 @@ TEST_F(IncludeFiles, PartWithoutBodiesOrElementsAddsNothingAndAnEmptyPartIsAnErr
     EXPECT_EQ(e.where().includedFrom, bad + ":3:10");
 }
 
+TEST_F(IncludeFiles, DeviceOrDirectoryIsRefusedAtTheIncludeNotRead) {
+    fs::create_directories(m_dir / "parts/adir");
+    for (const std::string target : {"/dev/zero", "parts/adir"}) {
+        SCOPED_TRACE(target);
+        const std::string text = "format_version: 1\nname: x\ninclude: " + target + "\nscenario: {analysis: linearize}\n";
+        const std::string top = write("top.yaml", text);
+        const SpecError e = test::readErrorOf(top, text, {});
+        test::expectSpecError(e, top, 3, 10, "include", target == "/dev/zero" ? "not a regular file" : "is a directory");
+    }
+}
+
 // Every file of tests/testdata/bad/include/ fails in a part, where its
 // comments say: "# expect: PART:LINE:COL KEY" and "# included-from: CHAIN",
 // paths relative to that directory.
