@@ -39,27 +39,29 @@ struct MpiSession {
     int rank = 0, size = 1;
 };
 
-/// Every rank's bytes on rank 0 (empty elsewhere). Sizes first, then the
-/// bytes; a part beyond 2 GiB is refused (MPI counts are int).
+/// Every rank's bytes on rank 0 (empty elsewhere): sizes first, then the
+/// bytes. MPI counts are int: when the total would exceed 2 GiB, rank 0
+/// says so to all (every rank then sends nothing, so none is left waiting)
+/// and throws.
 std::vector<std::string> gatherToRoot(const std::string& mine, const MpiSession& mpi) {
-    if (mine.size() > 0x7fffffffu) throw OutputError("a rank's share of the sweep exceeds 2 GiB");
-    const int myCount = static_cast<int>(mine.size());
+    const int myCount = mine.size() > 0x7fffffffu ? -1 : static_cast<int>(mine.size());
     std::vector<int> counts(mpi.rank == 0 ? mpi.size : 0);
     MPI_Gather(&myCount, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
     std::vector<int> displs(counts.size());
     long long total = 0;
+    int fits = 1;
     for (std::size_t r = 0; r < counts.size(); ++r) {
-        displs[r] = static_cast<int>(total);
-        total += counts[r];
+        displs[r] = static_cast<int>(std::min<long long>(total, 0x7fffffff));
+        if (counts[r] < 0) fits = 0;
+        total += std::max(0, counts[r]);
     }
-    // Rank 0 cannot refuse here without hanging the others in Gatherv: an
-    // oversized total is reported after it.
-    const bool fits = total <= 0x7fffffff;
-    std::string all(fits ? static_cast<std::size_t>(total) : 0, '\0');
+    if (total > 0x7fffffff) fits = 0;
+    MPI_Bcast(&fits, 1, MPI_INT, 0, MPI_COMM_WORLD);
     if (!fits) std::fill(counts.begin(), counts.end(), 0);
-    MPI_Gatherv(mine.data(), fits || mpi.rank != 0 ? myCount : 0, MPI_CHAR, &all[0], counts.data(), displs.data(),
-                MPI_CHAR, 0, MPI_COMM_WORLD);
-    if (mpi.rank == 0 && !fits) throw OutputError("the gathered sweep exceeds 2 GiB");
+    std::string all(fits ? static_cast<std::size_t>(total) : 0, '\0');
+    MPI_Gatherv(mine.data(), fits ? myCount : 0, MPI_CHAR, &all[0], counts.data(), displs.data(), MPI_CHAR, 0,
+                MPI_COMM_WORLD);
+    if (!fits) throw OutputError("the sweep's points exceed 2 GiB, more than one MPI gather can carry");
     std::vector<std::string> parts;
     for (std::size_t r = 0; r < counts.size(); ++r) parts.push_back(all.substr(displs[r], counts[r]));
     return parts;
