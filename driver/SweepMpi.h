@@ -37,8 +37,10 @@ struct MpiSweepResult {
 /// rank 0, writes the table and the points of every rank into
 /// options.outDir. options.shardIndex/shardCount are replaced by rank/size.
 /// Every rank takes part in the gather even when its own slice failed, so
-/// one failing rank cannot hang the others: the failure is rethrown (as an
-/// OutputError naming the rank) on rank 0. Finalises MPI before returning.
+/// one failing rank cannot hang the others: rank 0 throws an OutputError
+/// naming the rank, the others return normally (were they to exit non-zero,
+/// mpirun would kill rank 0 before it reports). Finalises MPI before
+/// returning.
 MpiSweepResult runSweepMpi(const SweepPlan& plan, SweepOptions options,
                            const std::function<void(std::size_t, std::size_t, std::size_t)>& progress = {});
 

@@ -94,6 +94,15 @@ TEST_F(MpiSweepTest, TwoRanksWriteTheSingleProcessTableByteForByteAndResume) {
     EXPECT_EQ(slurp(mpi / "sweep.csv"), table);
 }
 
+TEST_F(MpiSweepTest, FailingRanksAreReportedByRankZeroAndNothingHangs) {
+    if (kMpiexec.empty()) GTEST_SKIP() << "built without MPI";
+    std::ofstream(m_dir / "a_file") << "not a directory\n";  // no rank can write its points under it
+    const Result r = run(kMpirun, kSweep + " --mpi --out " + (m_dir / "a_file").string());
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("milldyn: output failed: rank 0 of 2 failed: cannot create output directory"),
+              std::string::npos) << r.err;
+}
+
 TEST_F(MpiSweepTest, MpiWithShardIsABadCommandLine) {
     if (kMpiexec.empty()) GTEST_SKIP() << "built without MPI";
     const Result r = run("", kSweep + " --mpi --shard 0/2 --out " + (m_dir / "x").string());
