@@ -76,7 +76,8 @@ public:
         ModelSpec spec;
         spec.file = m_file;
         checkKeys(root, "", {"format_version", "name", "description", "fidelity", "bodies", "elements",
-                             "scenario", "scenarios", "use_scenario", "integrator", "outputs"});
+                             "scenario", "scenarios", "use_scenario", "integrator", "outputs",
+                             "include" /* resolved and removed above; listed for "did you mean" */});
         const YAML::Node version = required(root, "format_version", "");
         const double versionNumber = readNumber(version, "format_version", "1");
         if (!(versionNumber >= 1 && versionNumber <= 1e6) || versionNumber != std::floor(versionNumber))
@@ -791,6 +792,9 @@ private:
     /// different fidelity levels reaches all of them.
     void applyOverride(YAML::Node root, const Override& o) {
         const SourceLocation at("<--set " + o.path + ">", 1, 1);
+        if (o.path == "include" || o.path.rfind("include.", 0) == 0)
+            throw SpecError(at, o.path, "includes are resolved before --set applies: change the file, or --set the "
+                                        "included values by their names");
         setValue(root, o.path, nullptr, o.value, at);
     }
 

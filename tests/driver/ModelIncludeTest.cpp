@@ -121,6 +121,19 @@ TEST(ModelInclude, SetOverridesReachIncludedValuesByTheirPrefixedNames) {
     EXPECT_EQ(spec.findBody("left_drum")->inertia, 2.5);
     // The part's own name is gone.
     EXPECT_THROW(read(kData + "/include_two_drums.yaml", {{"elements.charge.constant_torque", "1"}}), SpecError);
+    // The includes themselves are resolved before --set applies.
+    try {
+        read(kData + "/include_two_drums.yaml", {{"include.0", "other.yaml"}});
+        ADD_FAILURE() << "--set include.0 accepted";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.where().file, "<--set include.0>");
+        EXPECT_TRUE(contains(e.what(), "includes are resolved before --set")) << e.what();
+    }
+}
+
+TEST(ModelInclude, MisspelledIncludeKeySuggestsInclude) {
+    const SpecError e = test::readErrorOf("t.yaml", "format_version: 1\nname: x\nincludes: [a.yaml]\n", {});
+    test::expectSpecError(e, "t.yaml", 3, 1, "includes", "unknown key 'includes' (did you mean 'include'?)");
 }
 
 TEST(ModelInclude, AssembledLayoutRuns) {
