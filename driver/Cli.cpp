@@ -4,6 +4,7 @@
 #include "driver/SceneBuilder.h"
 #include "driver/PluginLoader.h"
 #include "driver/Sweep.h"
+#include "driver/SweepMpi.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
 #include "driver/outputs/Writers.h"
@@ -30,7 +31,8 @@ const char* kUsage =
     "  milldyn info MODEL.yaml [--set path=value]...\n"
     "  milldyn validate [--filter TEXT] [--json]\n"
     "  milldyn sweep MODEL.yaml (--grid path=a:b:n... | --lhs N --range path=a:b...) [--seed S]\n"
-    "                           [--jobs N] [--shard i/N] [--out DIR] [--set path=value]...\n"
+    "                           [--jobs N] [--shard i/N | --mpi] [--out DIR] [--set path=value]...\n"
+    "  mpirun -np N milldyn sweep ... --mpi      (each rank runs its slice; rank 0 writes the table)\n"
     "  milldyn merge DIR... --out DIR\n"
     "  milldyn --version | --help\n"
     "  any command: --plugin LIB.so (repeatable) loads element types from a plugin library\n";
@@ -55,6 +57,8 @@ struct Arguments {
     unsigned long seed = 1;
     unsigned jobs = 0;  ///< 0: all cores
     std::size_t shardIndex = 0, shardCount = 1;
+    bool shardGiven = false;
+    bool mpi = false;  ///< sweep --mpi: one slice per MPI rank
 };
 
 std::size_t parseCount(const std::string& option, const std::string& text, std::size_t max) {
@@ -96,7 +100,9 @@ Arguments parseArguments(const std::vector<std::string>& args) {
             a.shardCount = parseCount("--shard", v.substr(slash + 1), 1000000);
             if (a.shardCount == 0 || a.shardIndex >= a.shardCount)
                 throw UsageError("--shard i/N needs 0 <= i < N, got '" + v + "'");
+            a.shardGiven = true;
         }
+        else if (arg == "--mpi") a.mpi = true;
         else if (arg == "--json") a.json = true;
         else if (arg == "--quiet") a.quiet = true;
         else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
@@ -224,7 +230,21 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
         err << "\r  " << done << "/" << total << " points, " << failed << " failed, ETA " << std::setprecision(3)
             << eta << " s   " << std::flush;
     };
-    const SweepSummary summary = runSweep(plan, options, progress);
+    SweepSummary summary;
+    if (a.mpi) {
+        if (a.shardGiven) throw UsageError("--mpi gives each rank its slice: leave out --shard");
+        // Ranks are processes: one thread each unless --jobs says otherwise.
+        options.jobs = a.jobs > 0 ? a.jobs : 1;
+        const MpiSweepResult r = runSweepMpi(plan, options, progress);
+        if (r.rank != 0) return 0;  // rank 0 reports for all
+        summary = r.summary;
+        options.jobs *= static_cast<unsigned>(r.size);
+    } else {
+        // N ranks of one sweep without --mpi would all run every point into one directory.
+        if (launchedAsMpiRank() && !a.shardGiven)
+            throw UsageError("started as one of several MPI ranks: add --mpi (or run one process per --shard)");
+        summary = runSweep(plan, options, progress);
+    }
     if (showProgress) err << "\r" << std::string(50, ' ') << "\r";
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!a.quiet)
