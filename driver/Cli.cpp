@@ -109,6 +109,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
     }
     if ((a.command == "run" || a.command == "info" || a.command == "sweep") && a.model.empty())
         throw UsageError(a.command + " needs a model file");
+    if (!a.reportDir.empty() && a.command != "validate") throw UsageError("--report goes with validate");
     if (a.command == "merge") {
         if (a.model.empty()) throw UsageError("merge needs sweep directories");
         a.positional.insert(a.positional.begin(), a.model);

@@ -93,6 +93,9 @@ TEST(ValidationReport, CommandLineWritesTheReportBesideTheTable) {
               0);
     EXPECT_EQ(jout.str().front(), '[');
     EXPECT_NE(jerr.str().find("report.html"), std::string::npos);
+    std::ostringstream uout, uerr;
+    EXPECT_EQ(runCli({"info", "model.yaml", "--report", dir.string()}, uout, uerr), 2);
+    EXPECT_NE(uerr.str().find("--report goes with validate"), std::string::npos);
     fs::remove_all(dir);
 }
 
