@@ -151,8 +151,8 @@ void table1Case(std::size_t i, std::vector<ValidationRow>& rows) {
     const oc::Table1Check check = oc::computeTable1Row(row);
     const bool misprint = (i == 1);  // 5.5 kW, 50-70 kg/h: t_v = 1.10 s printed
     const std::string misprintNote =
-        "t_v = 1.10 s as printed gives these; the printed Mc, omega and N follow from t_v = 1.00 s "
-        "(see the row with the corrected t_v)";
+        "t_v = 1.10 s as printed gives these; the printed Mc, omega, N and M_zh all follow from "
+        "t_v = 1.00 s (see the rows at t_v = 1.00 s): the t_v cell is the misprint";
 
     rows.push_back(paperRow(name, "Mc printed vs eq 14", "N*m", row.Mc_Nm, check.Mc_Nm, 0.05, misprint, misprintNote));
     rows.push_back(paperRow(name, "omega printed vs eq 13", "rad/s", row.omega_radps, check.omega_radps, 0.05,
