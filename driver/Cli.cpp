@@ -10,6 +10,7 @@
 #include "driver/outputs/Writers.h"
 #include "plugins/ElementRegistry.h"
 #include "validation/cases/ValidationCases.h"
+#include "validation/report/ReportWriter.h"
 
 #include <algorithm>
 #include <chrono>
@@ -29,7 +30,7 @@ const char* kUsage =
     "  milldyn run MODEL.yaml [--out DIR] [--set path=value]... [--scenario NAME]\n"
     "                         [--integrator NAME] [--accuracy TOL] [--end-time T] [--quiet]\n"
     "  milldyn info MODEL.yaml [--set path=value]...\n"
-    "  milldyn validate [--filter TEXT] [--json]\n"
+    "  milldyn validate [--filter TEXT] [--json] [--report DIR]\n"
     "  milldyn sweep MODEL.yaml (--grid path=a:b:n... | --lhs N --range path=a:b...) [--seed S]\n"
     "                           [--jobs N] [--shard i/N | --mpi] [--out DIR] [--set path=value]...\n"
     "  mpirun -np N milldyn sweep ... --mpi      (each rank runs its slice; rank 0 writes the table)\n"
@@ -48,6 +49,7 @@ struct Arguments {
     std::string outDir = "out";
     std::vector<Override> overrides;
     std::string filter;
+    std::string reportDir;  ///< validate --report: where report.html/.md go
     bool json = false;
     bool quiet = false;
     std::vector<std::string> positional;  ///< after the model (merge: directories)
@@ -86,6 +88,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
         else if (arg == "--end-time") a.overrides.push_back({"scenario.end_time", value(i)});
         else if (arg == "--scenario") a.overrides.push_back({"use_scenario", value(i)});
         else if (arg == "--filter") a.filter = value(i);
+        else if (arg == "--report") a.reportDir = value(i);
         else if (arg == "--grid") a.grids.push_back(value(i));
         else if (arg == "--plugin") a.plugins.push_back(value(i));
         else if (arg == "--range") a.ranges.push_back(value(i));
@@ -112,6 +115,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
     }
     if ((a.command == "run" || a.command == "info" || a.command == "sweep") && a.model.empty())
         throw UsageError(a.command + " needs a model file");
+    if (!a.reportDir.empty() && a.command != "validate") throw UsageError("--report goes with validate");
     if (a.command == "merge") {
         if (a.model.empty()) throw UsageError("merge needs sweep directories");
         a.positional.insert(a.positional.begin(), a.model);
@@ -261,12 +265,19 @@ int commandMerge(const Arguments& a, std::ostream& out) {
     return 0;
 }
 
-int commandValidate(const Arguments& a, std::ostream& out) {
+int commandValidate(const Arguments& a, std::ostream& out, std::ostream& err) {
     const auto rows = runValidationCases(a.filter);
     if (a.json) {
         out << formatValidationJson(rows);
     } else {
         out << formatValidationTable(rows);
+    }
+    if (!a.reportDir.empty()) {
+        std::string warning;
+        const auto files = writeValidationReport(a.reportDir, rows, reportSections(), warning);
+        if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
+        (a.json ? err : out) << "wrote " << files.size() << " report files: " << a.reportDir << "/report.html, "
+            << a.reportDir << "/report.md\n";
     }
     for (const auto& r : rows)
         if (r.status == "fail") return 1;
@@ -289,7 +300,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         for (const auto& p : a.plugins) loadPlugin(p);
         if (a.command == "run") return commandRun(a, out, err);
         if (a.command == "info") return commandInfo(a, out);
-        if (a.command == "validate") return commandValidate(a, out);
+        if (a.command == "validate") return commandValidate(a, out, err);
         if (a.command == "sweep") return commandSweep(a, out, err);
         if (a.command == "merge") return commandMerge(a, out);
         throw UsageError("unknown command '" + a.command + "'");

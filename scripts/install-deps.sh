@@ -9,6 +9,7 @@ packages=(
   googletest libgtest-dev
   gnuplot-nox fonts-dejavu-core
   openmpi-bin libopenmpi-dev
+  chromium python3   # the validation report's render test (tests/report/render_check.sh)
 )
 
 missing=()
