@@ -306,7 +306,9 @@ void cToOneCases(const std::string& filter, std::vector<ValidationRow>& rows) {
         c.criteria.c = cValue;
         const oc::PlanetaryBeltOracle oracle(oracleParameters(c));
         const TurnComparison t = compareTurn(c, 13);
-        const std::string tag = "c = " + num(cValue);
+        char label[32];
+        std::snprintf(label, sizeof label, "c = %.10g", cValue);  // 1 ± 1e-9 stays distinct
+        const std::string tag = label;
         rows.push_back(judged(name, tag + ": max R_A error over 13 angles (vector)", "1", t.worstReaction, 0.0,
                               t.worstReaction, "held charge, rigid belt; finite for every c"));
         const AnalysisResult r = runAnalysis(modelFor(c, "paper", {{"scenario.angle_points", "1"}}));
@@ -493,6 +495,12 @@ void startUpCases(const std::string& filter, std::vector<ValidationRow>& rows) {
         worstTightRatio = std::max(worstTightRatio, at(run, k, "belt1.tension_tight") / tightKin);
         minKinSlack = std::min(minKinSlack, at(kin, 0, "belt1.tension_slack"));
     }
+    for (const ResultScalar& r : run.results)
+        if (r.name == "energy_balance_relative")
+            rows.push_back(judged(name, "energy balance of the start (belt energy + damping + slip + grinding)", "1",
+                                  std::abs(r.value), 0.0, std::abs(r.value),
+                                  "ΔKE + ΔPE − (drive − grinding − belt dissipation), relative: checks the belt's "
+                                  "potential energy and dissipated power against its forces"));
     const std::string note = "elastic belt, charge dragged by the wall; start ε = ε0 e^(−t), ω(4.6 s) = 30 rad/s, "
                              "8 s; oracle column: kinetostatics at the same instants";
     rows.push_back(info(name, "peak R_A over the start", "N", peakR, peakKinR, note));
