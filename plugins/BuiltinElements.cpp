@@ -11,6 +11,7 @@ void registerSegmentCharge(ElementRegistry& registry);
 void registerCarrierDrive(ElementRegistry& registry);
 void registerJournalFriction(ElementRegistry& registry);
 void registerJointReaction(ElementRegistry& registry);
+void registerBeltDrive(ElementRegistry& registry);
 
 void registerBuiltinElements(ElementRegistry& registry) {
     registerInductionMotor(registry);
@@ -22,6 +23,7 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerCarrierDrive(registry);
     registerJournalFriction(registry);
     registerJointReaction(registry);
+    registerBeltDrive(registry);
 }
 
 }  // namespace milldyn

@@ -44,5 +44,6 @@ std::string modelsDirectory();
 std::vector<ValidationRow> burrMillCases(const std::string& filter);
 std::vector<ValidationRow> rollCrusherCases(const std::string& filter);
 std::vector<ValidationRow> planetaryGearCases(const std::string& filter);
+std::vector<ValidationRow> planetaryBeltCases(const std::string& filter);
 
 }  // namespace milldyn
