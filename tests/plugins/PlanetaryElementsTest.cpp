@@ -317,5 +317,22 @@ TEST(PlanetaryModelKeys, PendulumUnderGravityHoldsWithTheStaticTorque) {
     EXPECT_NEAR(probe(*scene, s, "RA.on_arm_at_axis_x_ground"), 0.0, 1e-12);
 }
 
+TEST(PlanetaryModelKeys, AHeldChargeIsRefusedOutsideKinetostatics) {
+    const std::string text =
+        mill("  - {type: SegmentCharge, name: charge, drum: drum, drum_radius: 0.05 m, length: 0.2 m, bulk_density: "
+             "4800 kg/m^3, motion: held, lag: 45 deg}\n");
+    const std::string transient = test::replacedIn(text, "scenario: {analysis: kinetostatic, angle_points: 1}",
+                                                   "scenario: {analysis: transient, end_time: 1 s}");
+    const ModelSpec spec = readText("t.yaml", transient, {});
+    try {
+        runAnalysis(spec);
+        ADD_FAILURE() << "a transient with a held charge was accepted";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.key(), "charge.motion");
+        EXPECT_EQ(e.where().line, 9);
+    }
+    EXPECT_NO_THROW(runAnalysis(readText("t.yaml", text, {})));
+}
+
 }  // namespace
 }  // namespace milldyn
