@@ -46,11 +46,8 @@ constexpr double kTolerance = 1e-6;
 constexpr double kDrumRadius = 0.1;  // r_b [m], the printed 0.2 m drum
 const char* kModel = "/planetary_belt_200x1000.yaml";
 
-std::string fmt(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+/// Exact, for overrides.
+std::string fmt(double v) { return formatExact(v); }
 
 /// Short form for labels.
 std::string num(double v) {

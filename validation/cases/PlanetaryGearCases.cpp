@@ -73,11 +73,7 @@ double steadyRate(const Size& size) {
 constexpr double kAccelerationTime = 4.6;  // [s], the paper's (24)
 
 /// Exact, for overrides.
-std::string fmt(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+std::string fmt(double v) { return formatExact(v); }
 
 /// Short, for labels.
 std::string label(double v) {

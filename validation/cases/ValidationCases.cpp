@@ -1,5 +1,7 @@
 #include "validation/cases/ValidationCases.h"
 
+#include <cstdio>
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -22,6 +24,12 @@ ValidationRow compareRow(std::string caseName, std::string quantity, std::string
     r.status = (std::isfinite(r.relError) && r.relError <= tolerance) ? "pass" : "fail";
     r.note = std::move(note);
     return r;
+}
+
+std::string formatExact(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
 }
 
 std::vector<ValidationRow> runValidationCases(const std::string& filter) {

@@ -38,6 +38,10 @@ std::string formatValidationJson(const std::vector<ValidationRow>& rows);
 /// A table for people.
 std::string formatValidationTable(const std::vector<ValidationRow>& rows);
 
+/// `v` with every digit a double holds (%.17g), for --set overrides that
+/// must reach the model exactly.
+std::string formatExact(double v);
+
 /// Where the shipped model files are: $MILLDYN_MODELS, else the source tree's models/.
 std::string modelsDirectory();
 
