@@ -244,7 +244,7 @@ TEST(JournalFriction, WheelUnderGravityDeceleratesAtItsWeightTimesFrictionArm) {
     // M = m g f d/2 (tanh = 1 to 1e-300 above 1 rad/s) and the wheel slows
     // at M/J: u(t) = 20 − M t/J, exactly, for both couplings.
     const double m = 3, J = 0.05, f = 0.1, d = 0.04, g = 9.80665;
-    for (const std::string coupling : {"lagged", "iterated"}) {
+    for (const std::string coupling : {"lagged", "iterated", "extrapolated"}) {
         const std::string text =
             "format_version: 1\nname: wheel\ngravity: [0, -9.80665 m/s^2, 0]\n"
             "bodies:\n  - {name: wheel, mass: 3 kg, inertia: 0.05 kg*m^2, initial_speed: 20 rad/s, joint: {type: "
