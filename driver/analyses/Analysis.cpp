@@ -198,11 +198,11 @@ AnalysisResult runModelFile(const std::string& path, const std::vector<Override>
     return runAnalysis(spec);
 }
 
-AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
-    if (spec.scenario.type == "transient") return runTransient(spec, progress);
+AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
+    if (spec.scenario.type == "transient") return runTransient(spec, progress, observer);
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
     if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
-    if (spec.scenario.type == "kinetostatic") return runKinetostatic(spec, progress);
+    if (spec.scenario.type == "kinetostatic") return runKinetostatic(spec, progress, observer);
     if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
     if (spec.scenario.type == "resonance_map") return runResonanceMap(spec, progress);
     throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");
