@@ -198,7 +198,7 @@ AnalysisResult runModelFile(const std::string& path, const std::vector<Override>
     return runAnalysis(spec);
 }
 
-AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
+AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     // A charge held at its lag is a condition of one instant (its wall
     // torque is solved per configuration), not a law a time step can use.
     if (spec.scenario.type != "kinetostatic")
@@ -206,10 +206,10 @@ AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
             if (e.type == "SegmentCharge" && e.text("motion") == "held")
                 throw e.error("motion", "a held charge is a kinetostatic model; analysis '" + spec.scenario.type +
                                             "' needs motion: with_drum or dynamic_lag");
-    if (spec.scenario.type == "transient") return runTransient(spec, progress);
+    if (spec.scenario.type == "transient") return runTransient(spec, progress, observer);
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
     if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
-    if (spec.scenario.type == "kinetostatic") return runKinetostatic(spec, progress);
+    if (spec.scenario.type == "kinetostatic") return runKinetostatic(spec, progress, observer);
     if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
     if (spec.scenario.type == "resonance_map") return runResonanceMap(spec, progress);
     throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");

@@ -15,6 +15,7 @@
 
 #include "driver/ModelFile.h"
 #include "driver/analyses/Analysis.h"
+#include "validation/cases/PlanetaryGearCases.h"
 #include "validation/cases/ValidationCases.h"
 #include "validation/oracles/PlanetaryGearOracle.h"
 
@@ -328,6 +329,15 @@ void steadyCases(const Size& size, const std::string& filter, std::vector<Valida
     }
 }
 
+/// The multibody start without friction, sampled every `interval` [s].
+AnalysisResult runStart(const Size& size, double interval) {
+    std::vector<Override> o = noFriction();
+    o.push_back({"use_scenario", "start"});
+    o.push_back({"outputs.sample_interval", fmt(interval) + " s"});
+    o.push_back({"integrator.accuracy", "1e-10"});
+    return runKinetostatic(size, o);
+}
+
 /// The sample of `r` at time `t` (samples every `interval` from 0).
 double sampleAt(const AnalysisResult& r, const std::string& name, double t) {
     for (std::size_t k = 0; k < r.rows.size(); ++k)
@@ -351,12 +361,12 @@ void figure10Cases(const Size& size, const std::string& filter, std::vector<Vali
             return at(runKinetostatic(size, o), 0, "drive.torque");
         };
         const double asymptote = modelTorque(tpLong);
-        for (double tp : {std::log(4.0 / 3.0), 0.3, 0.4, 1.0, 3.0, 4.6}) {
+        for (double tp : planetaryGearFig10AccelerationTimes()) {
             const double m = modelTorque(tp);
-            rows.push_back(compareRow(nA, "M(t_p = " + label(tp) + " s)", "N*m", m,
+            rows.push_back(compareRow(nA, planetaryGearFig10TorqueQuantity(tp), "N*m", m,
                                       oracle.calcInitialTorqueVsAccelerationTime(wy, tp), kKinetostaticTolerance,
                                       "reading (a) of Fig. 10: (20) at ω = 0 with ε0 = ω_y/(1 − e^(−t_p))"));
-            ValidationRow ratio = compareRow(nA, "M(t_p)/M(∞) at t_p = " + label(tp) + " s",
+            ValidationRow ratio = compareRow(nA, planetaryGearFig10RatioQuantity(tp),
                                              "1", m / asymptote,
                                              oc::PlanetaryGearOracle::calcInitialTorqueRatio(tp, 1.0),
                                              kKinetostaticTolerance, "1/(1 − e^(−t_p)), independent of size");
@@ -381,17 +391,13 @@ void figure10Cases(const Size& size, const std::string& filter, std::vector<Vali
     // friction is first order only (see the start_friction case).
     const std::string nB = base + "_start_history";
     if (wanted(nB, filter)) {
-        std::vector<Override> o = noFriction();
-        o.push_back({"use_scenario", "start"});
-        o.push_back({"outputs.sample_interval", "0.05 s"});
-        o.push_back({"integrator.accuracy", "1e-10"});
-        const AnalysisResult r = runKinetostatic(size, o);
-        for (double t : {0.1, 0.5, 1.0, 2.0, 3.0, 5.0}) {
+        const AnalysisResult r = runStart(size, 0.05);
+        for (double t : planetaryGearStartHistoryTimes()) {
             const double full =
                 oracle.calcStartTorqueHistory(wy, kAccelerationTime, t, oc::StartTorqueModel::kRigidChargeKinetostatics);
             const double paperModel =
                 oracle.calcStartTorqueHistory(wy, kAccelerationTime, t, oc::StartTorqueModel::kPaperTangentialInertia);
-            ValidationRow row = compareRow(nB, "M(t = " + label(t) + " s) of the start, f = 0", "N*m",
+            ValidationRow row = compareRow(nB, planetaryGearStartHistoryQuantity(t), "N*m",
                                            sampleAt(r, "drive.torque", t), full, kKinetostaticTolerance * 10,
                                            "oracle: full kinetostatics at (φ, ω, ε)(t); the paper's J_pr ε(t) gives " +
                                                label(paperModel) + " N*m here");
@@ -450,6 +456,55 @@ void dynamicLagCases(const Size& size, const std::string& filter, std::vector<Va
 }
 
 }  // namespace
+
+std::string planetaryGearSizeTag(int size) { return kSizes[size].tag; }
+
+std::vector<double> planetaryGearFig10AccelerationTimes() { return {std::log(4.0 / 3.0), 0.3, 0.4, 1.0, 3.0, 4.6}; }
+
+std::string planetaryGearFig10TorqueQuantity(double tp) { return "M(t_p = " + label(tp) + " s)"; }
+
+std::string planetaryGearFig10RatioQuantity(double tp) { return "M(t_p)/M(∞) at t_p = " + label(tp) + " s"; }
+
+std::vector<double> planetaryGearStartHistoryTimes() { return {0.1, 0.5, 1.0, 2.0, 3.0, 5.0}; }
+
+std::string planetaryGearStartHistoryQuantity(double t) { return "M(t = " + label(t) + " s) of the start, f = 0"; }
+
+PlanetaryGearCurves calcPlanetaryGearCurves(int sizeIndex, int points) {
+    const Size& size = kSizes[sizeIndex];
+    const oc::PlanetaryGearOracle oracle(oracleParameters(size, 0));
+    PlanetaryGearCurves c;
+    c.steadyRate = steadyRate(size);
+    for (int k = 0; k <= points; ++k) {
+        const double u = double(k) / points;
+        const double tp = 0.25 * std::pow(6.0 / 0.25, u);  // log-spaced: the curve's knee is at small t_p
+        c.accelerationTime.push_back(tp);
+        c.torqueRatio.push_back(oc::PlanetaryGearOracle::calcInitialTorqueRatio(tp, 1.0));
+        const double t = 5.0 * u;
+        c.time.push_back(t);
+        c.torqueFull.push_back(oracle.calcStartTorqueHistory(c.steadyRate, kAccelerationTime, t,
+                                                             oc::StartTorqueModel::kRigidChargeKinetostatics));
+        c.torquePaper.push_back(oracle.calcStartTorqueHistory(c.steadyRate, kAccelerationTime, t,
+                                                              oc::StartTorqueModel::kPaperTangentialInertia));
+        oc::PlanetaryGearParameters p = oracleParameters(size, 0);
+        p.lagAngle = M_PI / 2 * u;
+        c.lagDeg.push_back(90 * u);
+        c.holdingTorque.push_back(oc::PlanetaryGearOracle(p)
+                                      .calcSteadyStateLoads(c.steadyRate, 0.0, oc::ChargeMotion::kHeldInCarrierFrame)
+                                      .driveTorque);
+    }
+    return c;
+}
+
+void simulatePlanetaryGearStart(int sizeIndex, double interval, std::vector<double>& time,
+                                std::vector<double>& torque) {
+    const AnalysisResult r = runStart(kSizes[sizeIndex], interval);
+    time.clear();
+    torque.clear();
+    for (std::size_t k = 0; k < r.rows.size(); ++k) {
+        time.push_back(r.rows[k][0]);
+        torque.push_back(at(r, k, "drive.torque"));
+    }
+}
 
 std::vector<ValidationRow> planetaryGearCases(const std::string& filter) {
     std::vector<ValidationRow> rows;
