@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Follows docs/new-layout.md step by step, as a reader would, against a
 # built milldyn:
-#   tests/tutorial/run_new_layout_tutorial.sh SOURCE_DIR MILLDYN_BINARY SCRATCH_DIR
+#   tests/tutorial/run_new_layout_tutorial.sh SOURCE_DIR MILLDYN_BINARY SCRATCH_DIR [DOC]
+# (DOC: another copy of the tutorial, for the test that the runner catches drift)
 # In the tutorial, in document order:
 #   ```sh tutorial                 a shell step, run with bash -e -o pipefail in
 #                                  SCRATCH_DIR (MILLDYN_SRC and MILLDYN set); it
@@ -13,14 +14,15 @@
 # shows that step's output.
 set -uo pipefail
 
-if [ $# -ne 3 ]; then
-  echo "usage: $0 SOURCE_DIR MILLDYN_BINARY SCRATCH_DIR" >&2
+if [ $# -ne 3 ] && [ $# -ne 4 ]; then
+  echo "usage: $0 SOURCE_DIR MILLDYN_BINARY SCRATCH_DIR [DOC]" >&2
   exit 2
 fi
 src=$(cd "$1" && pwd)
 binary=$(cd "$(dirname "$2")" && pwd)/$(basename "$2")
 scratch=$3
-doc=$src/docs/new-layout.md
+doc=${4:-$src/docs/new-layout.md}
+doc=$(cd "$(dirname "$doc")" && pwd)/$(basename "$doc")
 
 rm -rf "$scratch"
 mkdir -p "$scratch/.steps"
