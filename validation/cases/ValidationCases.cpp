@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
+#include <mutex>
 #include <sstream>
 
 namespace milldyn {
@@ -32,10 +33,28 @@ std::string formatExact(double v) {
     return buf;
 }
 
+namespace {
+std::mutex g_pluginGroupsMutex;
+std::vector<CaseGroup>& pluginGroups() {
+    static std::vector<CaseGroup> groups;
+    return groups;
+}
+}  // namespace
+
+void addValidationCaseGroup(CaseGroup group) {
+    const std::lock_guard<std::mutex> lock(g_pluginGroupsMutex);
+    pluginGroups().push_back(std::move(group));
+}
+
 std::vector<ValidationRow> runValidationCases(const std::string& filter) {
+    std::vector<CaseGroup> groups = {CaseGroup(burrMillCases), CaseGroup(rollCrusherCases),
+                                     CaseGroup(planetaryGearCases), CaseGroup(planetaryBeltCases)};
+    {
+        const std::lock_guard<std::mutex> lock(g_pluginGroupsMutex);
+        groups.insert(groups.end(), pluginGroups().begin(), pluginGroups().end());
+    }
     std::vector<ValidationRow> all;
-    for (const CaseGroup& group : {CaseGroup(burrMillCases), CaseGroup(rollCrusherCases), CaseGroup(planetaryGearCases),
-                                     CaseGroup(planetaryBeltCases)}) {
+    for (const CaseGroup& group : groups) {
         auto rows = group(filter);
         all.insert(all.end(), rows.begin(), rows.end());
     }

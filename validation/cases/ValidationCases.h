@@ -30,8 +30,13 @@ ValidationRow compareRow(std::string caseName, std::string quantity, std::string
 /// A group of cases (one machine); `filter` selects case names containing it.
 using CaseGroup = std::function<std::vector<ValidationRow>(const std::string& filter)>;
 
-/// Runs every case whose name contains `filter` (all when empty).
+/// Runs every case whose name contains `filter` (all when empty): the
+/// built-in groups, then those plugins added.
 std::vector<ValidationRow> runValidationCases(const std::string& filter);
+
+/// Adds a group of cases from a plugin library, so that
+/// `milldyn validate --plugin lib.so` runs them too (docs/new-layout.md).
+void addValidationCaseGroup(CaseGroup group);
 
 /// The JSON array `validate --json` prints.
 std::string formatValidationJson(const std::vector<ValidationRow>& rows);
