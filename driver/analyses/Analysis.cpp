@@ -79,6 +79,12 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
     };
     schemas["linearize"] = linearize;
 
+    ElementSchema statics;
+    statics.type = "static_deflection";
+    statics.doc = "Equilibrium at rest under the constant loads (gravity): every probe there and the "
+                  "deflection line of a FlexibleRotor (Newton on the accelerations).";
+    schemas["static_deflection"] = statics;
+
     ElementSchema response;
     response.type = "frequency_response";
     response.doc = "Steady-state amplitude and phase of every coupling torque under one harmonic of a "
@@ -184,6 +190,7 @@ AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
     if (spec.scenario.type == "transient") return runTransient(spec, progress);
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
     if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
+    if (spec.scenario.type == "static_deflection") return runStaticDeflection(spec, progress);
     if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
     if (spec.scenario.type == "resonance_map") return runResonanceMap(spec, progress);
     throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");

@@ -84,6 +84,7 @@ AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& pro
 AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn& progress);
 
 /// Sum of every probe with this role in this state.
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);

@@ -13,7 +13,7 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     scene.setExcitationsOn(x0, false);
     const int n = x0.getNU();
     if (x0.getNQ() != n)
-        throw AnalysisError("linearize: only pin joints are supported (nq = nu), got nq = " +
+        throw AnalysisError("linearize: only joints whose q̇ = u (pins, gimbals, bushings) are supported, got nq = " +
                             std::to_string(x0.getNQ()) + ", nu = " + std::to_string(n));
     const auto& probes = scene.probes();
     const int np = static_cast<int>(probes.size());
@@ -83,7 +83,7 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
         lm.modeShapes.col(c).cwiseAbs().maxCoeff(&at);
         lm.modeShapes.col(c) /= lm.modeShapes(at, c);
     }
-    for (const auto& b : scene.bodies()) lm.dofNames.push_back(b.name);
+    lm.dofNames = mobilityNames(scene, x0);
     for (const auto& p : probes) {
         lm.outputNames.push_back(p.name);
         lm.outputUnits.push_back(p.unit);
