@@ -30,7 +30,13 @@ struct LinearModel {
 /// Linearizes `scene` about `operatingPoint` (the excitations it carries are
 /// switched off for the derivatives). Throws AnalysisError for joints whose
 /// q̇ differs from u.
-LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint);
+/// With `withModes` false only M, C, K, A and the output rows are filled
+/// (no eigenproblems: what a static solve needs, at O(n²) instead of O(n³)).
+LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes = true);
+
+/// Fills naturalFrequencies and modeShapes from K v = ω² M v (K's symmetric
+/// part); linearizeScene does this unless told not to.
+void calcUndampedModes(LinearModel& model);
 
 struct AnalysisResult;
 /// Adds M, C, K, A and the eigenvalue and mode tables to a result.
