@@ -56,9 +56,10 @@ struct FlexibleRotorParams {
  *     support);
  *   bearings A (z = 0) and B (z = L_p): F = −k·Δ_radial − c·v_radial at the
  *     shaft centreline in ground, plus −k·Δ_axial at A (A locates axially);
- *   discs at z_j = L_p + offset + j·pitch, rigid on the segment holding their
- *     centre: m_d = ρ_d·π·D²/4·t, polar m_d D²/8, diametral m_d(3D²/4 + t²)/12,
- *     mass centre at e = unbalance/m_d off the axis;
+ *   discs at nodes z_j = L_p + offset + j·pitch: m_d = ρ_d·π·D²/4·t, polar
+ *     m_d D²/8, diametral m_d(3D²/4 + t²)/12, mass centre at e = unbalance/m_d
+ *     off the axis; half of each disc on each segment meeting at its node
+ *     (their mean rotation is the beam's slope there, to O(h²));
  *   gravity m·g on every segment at its mass centre.
  * </pre>
  *

@@ -32,14 +32,14 @@ namespace {
 namespace oc = milldyn::oracles;
 
 // The Hencky chain converges as O(h²) (bead_mill_convergence measures the
-// order: 2.0 for the deflection, 1.8-1.9 for the frequency). At the model
-// files' 96 segments the errors are 2.5e-4..5.8e-4 (1.0e-3..1.8e-3 at 48);
-// the rows hold them to 1e-3.
+// order: 2.0 for the deflection and the frequency). At the model files' 96
+// segments the errors are 1.1e-4..6e-4 (up to 1.8e-3 at 48); the rows hold
+// them to 1e-3.
 constexpr double kChainTolerance = 1e-3;
 // Same formula, same numbers: only round-off separates element and oracle.
 constexpr double kDragTolerance = 1e-12;
-// Observed convergence order vs the theoretical 2 (it is 2 asymptotically;
-// at 12-48 segments the higher-order terms move it by a few per cent).
+// Observed convergence order vs the theoretical 2 (measured 1.99-2.00; the
+// higher-order terms may move it by a few per cent at 12 segments).
 constexpr double kOrderTolerance = 0.1;
 // Beam finite elements for the oracle frequency: converged to < 1e-9 at 400.
 constexpr int kOracleElements = 400;
