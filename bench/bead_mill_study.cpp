@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
             ModelSpec base = beadmill::readRotor(which);
             const ElementSpec& e0 = beadmill::rotorElement(base);
             const oracles::BeadMillBeam beam(beadmill::oracleShaft(e0));
-            const double g = e0.number("gravity");
+            const double g = beadmill::gravityOf(base);
             const double seal = beam.calcGravityDeflection(beam.shaft().span + e0.number("seal_offset"), g);
             const double end = beam.calcGravityDeflection(beam.getLength(), g);
             const double omega = beam.calcFiniteElementFrequencies(400, true, true).at(0);
@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
                 const oracles::BeadMillBeam beam(shaft);
                 shaft.stiffnessA = shaft.stiffnessB = std::numeric_limits<double>::infinity();
                 const oracles::BeadMillBeam rigid(shaft);
-                const double g = e.number("gravity");
+                const double g = beadmill::gravityOf(spec);
                 const auto st = beadmill::runStatic(spec);
                 const auto fb = beadmill::firstBending(spec);
                 out << span << "," << beam.shaft().diameter * 1e3 << "," << st.seal * 1e6 << ","

@@ -4,11 +4,13 @@
 #include "driver/SceneBuilder.h"
 #include "driver/PluginLoader.h"
 #include "driver/Sweep.h"
+#include "driver/SweepMpi.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
 #include "driver/outputs/Writers.h"
 #include "plugins/ElementRegistry.h"
 #include "validation/cases/ValidationCases.h"
+#include "validation/report/ReportWriter.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,9 +30,10 @@ const char* kUsage =
     "  milldyn run MODEL.yaml [--out DIR] [--set path=value]... [--scenario NAME]\n"
     "                         [--integrator NAME] [--accuracy TOL] [--end-time T] [--quiet]\n"
     "  milldyn info MODEL.yaml [--set path=value]...\n"
-    "  milldyn validate [--filter TEXT] [--json]\n"
+    "  milldyn validate [--filter TEXT] [--json] [--report DIR]\n"
     "  milldyn sweep MODEL.yaml (--grid path=a:b:n... | --lhs N --range path=a:b...) [--seed S]\n"
-    "                           [--jobs N] [--shard i/N] [--out DIR] [--set path=value]...\n"
+    "                           [--jobs N] [--shard i/N | --mpi] [--out DIR] [--set path=value]...\n"
+    "  mpirun -np N milldyn sweep ... --mpi      (each rank runs its slice; rank 0 writes the table)\n"
     "  milldyn merge DIR... --out DIR\n"
     "  milldyn --version | --help\n"
     "  any command: --plugin LIB.so (repeatable) loads element types from a plugin library\n";
@@ -46,6 +49,7 @@ struct Arguments {
     std::string outDir = "out";
     std::vector<Override> overrides;
     std::string filter;
+    std::string reportDir;  ///< validate --report: where report.html/.md go
     bool json = false;
     bool quiet = false;
     std::vector<std::string> positional;  ///< after the model (merge: directories)
@@ -55,6 +59,8 @@ struct Arguments {
     unsigned long seed = 1;
     unsigned jobs = 0;  ///< 0: all cores
     std::size_t shardIndex = 0, shardCount = 1;
+    bool shardGiven = false;
+    bool mpi = false;  ///< sweep --mpi: one slice per MPI rank
 };
 
 std::size_t parseCount(const std::string& option, const std::string& text, std::size_t max) {
@@ -82,6 +88,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
         else if (arg == "--end-time") a.overrides.push_back({"scenario.end_time", value(i)});
         else if (arg == "--scenario") a.overrides.push_back({"use_scenario", value(i)});
         else if (arg == "--filter") a.filter = value(i);
+        else if (arg == "--report") a.reportDir = value(i);
         else if (arg == "--grid") a.grids.push_back(value(i));
         else if (arg == "--plugin") a.plugins.push_back(value(i));
         else if (arg == "--range") a.ranges.push_back(value(i));
@@ -96,7 +103,9 @@ Arguments parseArguments(const std::vector<std::string>& args) {
             a.shardCount = parseCount("--shard", v.substr(slash + 1), 1000000);
             if (a.shardCount == 0 || a.shardIndex >= a.shardCount)
                 throw UsageError("--shard i/N needs 0 <= i < N, got '" + v + "'");
+            a.shardGiven = true;
         }
+        else if (arg == "--mpi") a.mpi = true;
         else if (arg == "--json") a.json = true;
         else if (arg == "--quiet") a.quiet = true;
         else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
@@ -106,6 +115,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
     }
     if ((a.command == "run" || a.command == "info" || a.command == "sweep") && a.model.empty())
         throw UsageError(a.command + " needs a model file");
+    if (!a.reportDir.empty() && a.command != "validate") throw UsageError("--report goes with validate");
     if (a.command == "merge") {
         if (a.model.empty()) throw UsageError("merge needs sweep directories");
         a.positional.insert(a.positional.begin(), a.model);
@@ -224,7 +234,21 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
         err << "\r  " << done << "/" << total << " points, " << failed << " failed, ETA " << std::setprecision(3)
             << eta << " s   " << std::flush;
     };
-    const SweepSummary summary = runSweep(plan, options, progress);
+    SweepSummary summary;
+    if (a.mpi) {
+        if (a.shardGiven) throw UsageError("--mpi gives each rank its slice: leave out --shard");
+        // Ranks are processes: one thread each unless --jobs says otherwise.
+        options.jobs = a.jobs > 0 ? a.jobs : 1;
+        const MpiSweepResult r = runSweepMpi(plan, options, progress);
+        if (r.rank != 0) return 0;  // rank 0 reports for all
+        summary = r.summary;
+        options.jobs *= static_cast<unsigned>(r.size);
+    } else {
+        // N ranks of one sweep without --mpi would all run every point into one directory.
+        if (launchedAsMpiRank() && !a.shardGiven)
+            throw UsageError("started as one of several MPI ranks: add --mpi (or run one process per --shard)");
+        summary = runSweep(plan, options, progress);
+    }
     if (showProgress) err << "\r" << std::string(50, ' ') << "\r";
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!a.quiet)
@@ -241,12 +265,19 @@ int commandMerge(const Arguments& a, std::ostream& out) {
     return 0;
 }
 
-int commandValidate(const Arguments& a, std::ostream& out) {
+int commandValidate(const Arguments& a, std::ostream& out, std::ostream& err) {
     const auto rows = runValidationCases(a.filter);
     if (a.json) {
         out << formatValidationJson(rows);
     } else {
         out << formatValidationTable(rows);
+    }
+    if (!a.reportDir.empty()) {
+        std::string warning;
+        const auto files = writeValidationReport(a.reportDir, rows, reportSections(), warning);
+        if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
+        (a.json ? err : out) << "wrote " << files.size() << " report files: " << a.reportDir << "/report.html, "
+            << a.reportDir << "/report.md\n";
     }
     for (const auto& r : rows)
         if (r.status == "fail") return 1;
@@ -269,7 +300,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         for (const auto& p : a.plugins) loadPlugin(p);
         if (a.command == "run") return commandRun(a, out, err);
         if (a.command == "info") return commandInfo(a, out);
-        if (a.command == "validate") return commandValidate(a, out);
+        if (a.command == "validate") return commandValidate(a, out, err);
         if (a.command == "sweep") return commandSweep(a, out, err);
         if (a.command == "merge") return commandMerge(a, out);
         throw UsageError("unknown command '" + a.command + "'");

@@ -69,12 +69,15 @@ public:
         }
         if (!root || root.IsNull()) throw SpecError({m_file, 1, 1}, "", "the model file is empty");
         requireMap(root, "<document>");
+        std::vector<OpenFile> open{{canonicalPath(m_file), m_file}};
+        resolveIncludes(root, open);  // first: --set reaches included values too
         for (const auto& o : overrides) applyOverride(root, o);
 
         ModelSpec spec;
         spec.file = m_file;
         checkKeys(root, "", {"format_version", "name", "description", "fidelity", "bodies", "elements",
-                             "scenario", "scenarios", "use_scenario", "integrator", "outputs"});
+                             "scenario", "scenarios", "use_scenario", "integrator", "outputs",
+                             "gravity", "include" /* resolved and removed above; listed for "did you mean" */});
         const YAML::Node version = required(root, "format_version", "");
         const double versionNumber = readNumber(version, "format_version", "1");
         if (!(versionNumber >= 1 && versionNumber <= 1e6) || versionNumber != std::floor(versionNumber))
@@ -91,6 +94,7 @@ public:
 
         if (root["fidelity"]) readFidelity(root["fidelity"], spec);
         readBodies(required(root, "bodies", ""), spec);
+        if (root["gravity"]) readVector3(root["gravity"], "gravity", "m/s^2", spec.gravity);
         if (root["elements"]) readElements(root["elements"], spec);
         readScenarios(root, spec);
         if (!spec.fidelity.empty()) keepSelectedFidelity(spec);
@@ -102,27 +106,50 @@ public:
 private:
     std::string m_file;
     const ModelFileReader& m_lookups;
-    std::vector<std::pair<YAML::Node, std::string>> m_overridden;  // node, "--set path"
+    std::vector<std::pair<YAML::Node, SourceLocation>> m_overridden;  // node, "<--set path>"
     struct AddedKey {
         YAML::Node map;
         std::string key;
-        std::string label;
+        SourceLocation where;  ///< the --set, or the include's set: key
     };
     std::vector<AddedKey> m_addedKeys;  // keys --set created, for their diagnostics
+
+    /// One included part file: its path (relative to the working directory,
+    /// as the user would open it) and the chain that brought it in.
+    struct Inclusion {
+        std::string file;
+        std::string includedFrom;
+    };
+    std::vector<Inclusion> m_inclusions;
+    /// Every node of every included file, with the index of its inclusion:
+    /// yaml-cpp marks know line and column but not the file.
+    std::vector<std::pair<YAML::Node, std::size_t>> m_origin;
+    /// Lists the includes assembled (a file's bodies: after its parts'),
+    /// located where the file's own list (or its include:) was written.
+    std::vector<std::pair<YAML::Node, SourceLocation>> m_placed;
 
     SourceLocation whereKey(const YAML::Node& map, const YAML::Node& keyNode) const {
         if (keyNode.IsScalar())
             for (const auto& a : m_addedKeys)
-                if (a.map.is(map) && a.key == keyNode.Scalar()) return {"<" + a.label + ">", 1, 1};
+                if (a.map.is(map) && a.key == keyNode.Scalar()) return a.where;
         return where(keyNode);
     }
 
     SourceLocation where(const YAML::Node& n) const {
         for (const auto& o : m_overridden)
-            if (o.first.is(n)) return {"<" + o.second + ">", 1, 1};
+            if (o.first.is(n)) return o.second;
+        for (const auto& p : m_placed)
+            if (p.first.is(n)) return p.second;
+        std::string file = m_file, chain;
+        for (const auto& o : m_origin)
+            if (o.first.is(n)) {
+                file = m_inclusions[o.second].file;
+                chain = m_inclusions[o.second].includedFrom;
+                break;
+            }
         const YAML::Mark m = n.Mark();
-        if (m.line < 0) return {m_file, 1, 1};
-        return {m_file, m.line + 1, m.column + 1};
+        if (m.line < 0) return {file, 1, 1, chain};
+        return {file, m.line + 1, m.column + 1, chain};
     }
 
     SpecError error(const YAML::Node& n, const std::string& key, const std::string& reason) const {
@@ -390,7 +417,8 @@ private:
             b.where = where(n);
             b.name = scalar(required(n, "name", "bodies."), "name");
             const std::string prefix = b.name + ".";
-            checkKeys(n, prefix, {"name", "inertia", "mass", "joint", "initial_angle", "initial_speed", "fidelity"});
+            checkKeys(n, prefix, {"name", "inertia", "mass", "mass_centre", "joint", "initial_angle", "initial_speed",
+                                  "fidelity"});
             b.fidelity = readMemberLevels(n, prefix, spec);
             if (b.name == "ground") throw error(n["name"], "name", "'ground' is reserved for the fixed frame");
             if (spec.findBody(b.name)) throw error(n["name"], "name", "a body named '" + b.name + "' exists already");
@@ -402,6 +430,18 @@ private:
             if (n["mass"]) {
                 b.mass = readNumber(n["mass"], prefix + "mass", "kg");
                 if (b.mass < 0) throw error(n["mass"], prefix + "mass", "mass must be >= 0 kg, got " + formatNumber(b.mass));
+            }
+            if (n["mass_centre"]) {
+                const YAML::Node c = n["mass_centre"];
+                readVector3(c, prefix + "mass_centre", "m", b.massCentre);
+                const double offAxis2 = b.massCentre[0] * b.massCentre[0] + b.massCentre[1] * b.massCentre[1];
+                if (offAxis2 > 0 && !(b.mass > 0))
+                    throw error(c, prefix + "mass_centre", "a mass centre off the joint axis needs a mass > 0 kg");
+                if (!(b.inertia > b.mass * offAxis2))
+                    throw error(c, prefix + "mass_centre",
+                                "inertia about the joint axis (" + formatNumber(b.inertia) +
+                                    " kg*m^2) must exceed mass*distance^2 = " + formatNumber(b.mass * offAxis2) +
+                                    " kg*m^2 (parallel-axis theorem)");
             }
             if (n["initial_angle"]) b.initialAngle = readNumber(n["initial_angle"], prefix + "initial_angle", "rad");
             if (n["initial_speed"]) b.initialSpeed = readNumber(n["initial_speed"], prefix + "initial_speed", "rad/s");
@@ -425,12 +465,15 @@ private:
                 throw error(n["parent"], prefix + "joint.parent",
                             "no body named '" + j.parent + "' defined above this one (parents come first)");
         }
-        if (n["location"]) {
-            const YAML::Node loc = n["location"];
-            requireList(loc, prefix + "joint.location");
-            if (loc.size() != 3) throw error(loc, prefix + "joint.location", "expected [x, y, z] lengths");
-            for (std::size_t i = 0; i < 3; ++i) j.location[i] = readNumber(loc[i], prefix + "joint.location", "m");
-        }
+        if (n["location"]) readVector3(n["location"], prefix + "joint.location", "m", j.location);
+    }
+
+    /// `[x, y, z]` in `unit`, each entry finite.
+    void readVector3(const YAML::Node& n, const std::string& key, const std::string& unit,
+                     std::array<double, 3>& v) const {
+        requireList(n, key);
+        if (n.size() != 3) throw error(n, key, "expected [x, y, z] in " + unit);
+        for (std::size_t i = 0; i < 3; ++i) v[i] = readNumber(n[i], key, unit);
     }
 
     void readElements(const YAML::Node& list, ModelSpec& spec) const {
@@ -542,6 +585,214 @@ private:
         if (n["plots"]) out.plots = readBool(n["plots"], "outputs.plots");
     }
 
+    // ------------------------------------------------------------ include:
+
+    /// The file chain being included, outermost first: the cycle check.
+    struct OpenFile {
+        std::string canonical;
+        std::string display;
+    };
+
+    static std::string canonicalPath(const std::string& file) {
+        std::error_code ec;
+        const auto c = std::filesystem::weakly_canonical(file, ec);
+        return ec ? std::filesystem::path(file).lexically_normal().string() : c.string();
+    }
+
+    static std::string formatLocation(const SourceLocation& at) {
+        return at.file + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) +
+               (at.includedFrom.empty() ? "" : ", included from " + at.includedFrom);
+    }
+
+    void registerNodes(const YAML::Node& n, std::size_t inclusion, int depth = 0) {
+        // Aliases repeat nodes, never nest without end, but a hostile file
+        // could still nest very deep: yaml-cpp itself stops long before this.
+        if (depth > 10000) return;
+        m_origin.emplace_back(n, inclusion);
+        if (n.IsMap()) {
+            for (auto it = n.begin(); it != n.end(); ++it) {
+                m_origin.emplace_back(it->first, inclusion);
+                registerNodes(it->second, inclusion, depth + 1);
+            }
+        } else if (n.IsSequence()) {
+            for (const auto& child : n) registerNodes(child, inclusion, depth + 1);
+        }
+    }
+
+    /// Replaces `include:` of `doc` (the model file or a part file): every
+    /// part's bodies and elements go in front of doc's own, in include order,
+    /// after the part's own includes, its `set:` and its `prefix:`.
+    void resolveIncludes(YAML::Node doc, std::vector<OpenFile>& open) {
+        if (!doc["include"]) return;
+        const YAML::Node includeNode = doc["include"];
+        int seen = 0;
+        for (auto it = doc.begin(); it != doc.end(); ++it)
+            if (it->first.IsScalar() && it->first.Scalar() == "include" && ++seen == 2)
+                throw SpecError(whereKey(doc, it->first), "include", "duplicate key");
+        std::vector<YAML::Node> entries;
+        if (includeNode.IsScalar() || includeNode.IsMap()) {  // one entry
+            entries.push_back(includeNode);
+        } else {
+            requireList(includeNode, "include");
+            for (const auto& e : includeNode) entries.push_back(e);
+        }
+        std::vector<YAML::Node> bodies, elements;
+        for (const auto& entry : entries) {
+            YAML::Node part = includePart(entry, open);
+            for (const char* key : {"bodies", "elements"}) {
+                if (!part[key]) continue;
+                const YAML::Node list = part[key];
+                requireList(list, key);
+                for (const auto& item : list) (std::string(key) == "bodies" ? bodies : elements).push_back(item);
+            }
+        }
+        const SourceLocation includeAt = where(includeNode);
+        for (const char* key : {"bodies", "elements"}) {
+            const std::vector<YAML::Node>& items = std::string(key) == "bodies" ? bodies : elements;
+            if (items.empty()) continue;
+            YAML::Node merged(YAML::NodeType::Sequence);
+            for (const auto& item : items) merged.push_back(item);  // the same nodes: locations kept
+            SourceLocation at = includeAt;
+            if (doc[key]) {
+                const YAML::Node own = doc[key];
+                requireList(own, key);
+                at = where(own);
+                for (const auto& item : own) merged.push_back(item);
+                doc.remove(key);
+            }
+            doc[key] = merged;
+            m_placed.emplace_back(doc[key], at);
+        }
+        doc.remove("include");
+    }
+
+    /// Reads one `include:` entry (`path` or `{file: path, prefix: p_, set:
+    /// {path: value}}`) and returns the part, its own includes resolved,
+    /// `set:` applied and `prefix:` prepended to its names.
+    YAML::Node includePart(const YAML::Node& entry, std::vector<OpenFile>& open) {
+        // Plain copies: a default YAML::Node is a defined null, and Node
+        // assignment would write into the tree.
+        const bool isMap = entry.IsMap();
+        if (isMap) checkKeys(entry, "include.", {"file", "prefix", "set"});
+        const YAML::Node fileNode = isMap ? required(entry, "file", "include.") : entry;
+        const bool hasPrefix = isMap && entry["prefix"], hasSet = isMap && entry["set"];
+        const YAML::Node prefixNode = hasPrefix ? entry["prefix"] : YAML::Node();
+        const YAML::Node setNode = hasSet ? entry["set"] : YAML::Node();
+        if (!isMap && !entry.IsScalar())
+            throw error(entry, "include", "expected a file name or {file: ..., prefix: ..., set: {...}}, got " +
+                                              typeName(entry));
+        const std::string written = scalar(fileNode, "include.file");
+        if (written.empty()) throw error(fileNode, "include.file", "empty file name");
+        const SourceLocation entryAt = where(fileNode);
+        // Relative to the including file, as a C #include "...".
+        const std::filesystem::path base = std::filesystem::path(open.back().display).parent_path();
+        const std::filesystem::path writtenPath(written);
+        const std::string file =
+            (writtenPath.is_absolute() ? writtenPath : base / writtenPath).lexically_normal().string();
+        const std::string canonical = canonicalPath(file);
+        for (std::size_t i = 0; i < open.size(); ++i)
+            if (open[i].canonical == canonical) {
+                std::string cycle;
+                for (std::size_t k = i; k < open.size(); ++k) cycle += open[k].display + " -> ";
+                throw error(fileNode, "include", "include cycle: " + cycle + file);
+            }
+        if (open.size() > 32) throw error(fileNode, "include", "includes nest deeper than 32 files");
+
+        std::error_code ec;
+        if (std::filesystem::is_directory(file, ec))
+            throw error(fileNode, "include", "'" + file + "' is a directory, not a part file");
+        if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
+            throw error(fileNode, "include", "'" + file + "' is not a regular file");  // a FIFO or device would hang
+        std::ifstream in(file, std::ios::binary);
+        if (!in)
+            throw error(fileNode, "include",
+                        "cannot open '" + file + "'" +
+                            (std::filesystem::exists(file, ec) ? " (permission denied?)" : ": no such file"));
+        std::ostringstream text;
+        text << in.rdbuf();
+
+        const std::string chain = formatLocation(entryAt);
+        m_inclusions.push_back({file, chain});
+        const std::size_t inclusion = m_inclusions.size() - 1;
+        YAML::Node part;
+        try {
+            part = YAML::Load(text.str());
+        } catch (const YAML::ParserException& e) {
+            throw SpecError({file, e.mark.line + 1, e.mark.column + 1, chain}, "", "malformed YAML: " + e.msg);
+        }
+        if (!part || part.IsNull()) throw SpecError({file, 1, 1, chain}, "", "the part file is empty");
+        registerNodes(part, inclusion);
+        requireMap(part, "<document>");
+        checkKeys(part, "", {"format_version", "description", "include", "bodies", "elements"});
+        if (part["format_version"]) {
+            const YAML::Node v = part["format_version"];
+            if (readNumber(v, "format_version", "1") != kModelFormatVersion)
+                throw error(v, "format_version",
+                            "unsupported format version " + scalar(v, "format_version") + " (this milldyn reads version " +
+                                std::to_string(kModelFormatVersion) + ")");
+        }
+        open.push_back({canonical, file});
+        resolveIncludes(part, open);
+        open.pop_back();
+
+        if (hasSet) {
+            requireMap(setNode, "include.set");
+            for (auto it = setNode.begin(); it != setNode.end(); ++it) {
+                const std::string path = scalar(it->first, "include.set");
+                if (path.empty() || path.front() == '.' || path.back() == '.' || path.find("..") != std::string::npos)
+                    throw SpecError(whereKey(setNode, it->first), path, "malformed path");
+                const YAML::Node value = it->second;
+                setValue(part, path, &value, "", whereKey(setNode, it->first));
+            }
+        }
+        if (hasPrefix) {
+            const std::string prefix = scalar(prefixNode, "include.prefix");
+            if (prefix.empty() || prefix.find_first_of(". \t") != std::string::npos)
+                throw error(prefixNode, "include.prefix", "expected a non-empty prefix without dots or spaces");
+            applyPrefix(part, prefix);
+        }
+        return part;
+    }
+
+    /// Prepends `prefix` to the names of the part's bodies and elements and
+    /// to every reference to one of its bodies (joint parents, the body keys
+    /// of elements); references to bodies outside the part stay as written.
+    void applyPrefix(YAML::Node part, const std::string& prefix) const {
+        std::set<std::string> bodyNames;
+        if (part["bodies"] && part["bodies"].IsSequence())
+            for (const auto& b : part["bodies"])
+                if (b.IsMap() && b["name"] && b["name"].IsScalar()) bodyNames.insert(b["name"].Scalar());
+        std::vector<YAML::Node> renamed;  // an aliased name is one node: rename it once
+        auto rename = [&](YAML::Node n, bool onlyBodies) {
+            if (!n || !n.IsScalar() || (onlyBodies && !bodyNames.count(n.Scalar()))) return;
+            for (const auto& r : renamed)
+                if (r.is(n)) return;
+            n = prefix + n.Scalar();  // a string assignment keeps the node's mark
+            renamed.push_back(n);
+        };
+        if (part["bodies"] && part["bodies"].IsSequence())
+            for (YAML::Node b : part["bodies"]) {
+                if (!b.IsMap()) continue;
+                rename(b["name"], false);
+                if (b["joint"] && b["joint"].IsMap()) rename(b["joint"]["parent"], true);
+            }
+        if (part["elements"] && part["elements"].IsSequence())
+            for (YAML::Node e : part["elements"]) {
+                if (!e.IsMap()) continue;
+                rename(e["name"], false);
+                const ElementSchema* schema =
+                    e["type"] && e["type"].IsScalar() ? m_lookups.elementSchema(e["type"].Scalar()) : nullptr;
+                if (!schema) continue;  // the reader reports the unknown type
+                for (const auto& p : schema->params) {
+                    YAML::Node v = e[p.key];
+                    if (!v) continue;
+                    if (p.kind == ParamKind::BodyRef) rename(v, true);
+                    if ((p.kind == ParamKind::BodyPair || p.kind == ParamKind::BodyList) && v.IsSequence())
+                        for (YAML::Node item : v) rename(item, true);
+                }
+            }
+    }
+
     /// How many places of the document hold `target` (an anchored block
     /// used through aliases is one node at several places).
     static int occurrences(const YAML::Node& node, const YAML::Node& target) {
@@ -557,10 +808,22 @@ private:
     /// replaces (or adds) the last key's value. A name shared by items of
     /// different fidelity levels reaches all of them.
     void applyOverride(YAML::Node root, const Override& o) {
-        const std::string label = "--set " + o.path;
-        auto fail = [&](const std::string& reason) { return SpecError({"<" + label + ">", 1, 1}, o.path, reason); };
+        const SourceLocation at("<--set " + o.path + ">", 1, 1);
+        if (o.path == "include" || o.path.rfind("include.", 0) == 0)
+            throw SpecError(at, o.path, "includes are resolved before --set applies: change the file, or --set the "
+                                        "included values by their names");
+        setValue(root, o.path, nullptr, o.value, at);
+    }
+
+    /// Sets the value at `path` (see applyOverride) to `valueNode` (a node of
+    /// an including file's `set:`, which keeps its own location) or, when
+    /// that is null, to `valueText` located at `at`.
+    void setValue(YAML::Node root, const std::string& path, const YAML::Node* valueNode, const std::string& valueText,
+                  const SourceLocation& at) {
+        const std::string noun = valueNode ? "set:" : "--set";
+        auto fail = [&](const std::string& reason) { return SpecError(at, path, reason); };
         std::vector<std::string> parts;
-        std::stringstream ss(o.path);
+        std::stringstream ss(path);
         for (std::string part; std::getline(ss, part, '.');) parts.push_back(part);
         std::vector<YAML::Node> nodes(1);
         nodes[0].reset(root);
@@ -586,8 +849,8 @@ private:
                         // An optional section the file leaves out (integrator:,
                         // outputs:): create it; the reader then checks its keys.
                         node[part] = YAML::Node(YAML::NodeType::Map);
-                        m_addedKeys.push_back({node, part, label});
-                        m_overridden.emplace_back(node[part], label);
+                        m_addedKeys.push_back({node, part, at});
+                        m_overridden.emplace_back(node[part], at);
                     }
                     const YAML::Node child = node[part];
                     next.emplace_back();
@@ -601,21 +864,25 @@ private:
             // the source locations, so such an override is refused.
             for (const auto& n : next)
                 if (occurrences(root, n) > 1)
-                    throw fail("'" + part + "' is an anchored block used through aliases (*name); --set would change "
-                               "every use of it: write the value in the file instead");
+                    throw fail("'" + part + "' is an anchored block used through aliases (*name); " + noun +
+                               " would change every use of it: write the value in the file instead");
             nodes.swap(next);  // element-wise operator= would write into the tree
         }
         const std::string& last = parts.back();
         for (YAML::Node& node : nodes) {
             if (!node.IsMap()) throw fail("the path must end at a key of a mapping");
-            if (node[last] && !node[last].IsScalar() && !node[last].IsNull())
+            if (!valueNode && node[last] && !node[last].IsScalar() && !node[last].IsNull())
                 throw fail("--set replaces single values only");
-            if (!node[last]) m_addedKeys.push_back({node, last, label});
+            if (!node[last]) m_addedKeys.push_back({node, last, at});
             // Assigning into an existing node would write through YAML aliases
             // (&x / *x) into every other use of the value: detach it first.
             if (node[last]) node.remove(last);
-            node[last] = o.value;
-            m_overridden.emplace_back(node[last], label);
+            if (valueNode) {
+                node[last] = *valueNode;  // the same node: it keeps its file, line and column
+            } else {
+                node[last] = valueText;
+                m_overridden.emplace_back(node[last], at);
+            }
         }
     }
 };

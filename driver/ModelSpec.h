@@ -29,6 +29,10 @@ struct BodySpec {
     double inertia = 0;
     /// Mass [kg], >= 0 (a shaft on a pin needs none).
     double mass = 0;
+    /// Mass centre in the body frame, whose origin is on the joint axis [m].
+    /// Off the axis it needs a mass, and `inertia` (about the joint axis)
+    /// must exceed mass*|xy|^2 (parallel-axis theorem).
+    std::array<double, 3> massCentre{{0, 0, 0}};
     JointSpec joint;
     double initialAngle = 0;  ///< [rad]
     double initialSpeed = 0;  ///< [rad/s]
@@ -60,6 +64,9 @@ struct ModelSpec {
     std::vector<std::string> fidelityLevels;
     std::string fidelity;
     std::vector<BodySpec> bodies;
+    /// Uniform gravity in the ground frame [m/s^2]; zero (the default) builds
+    /// no gravity force, so shafts on pins need none.
+    std::array<double, 3> gravity{{0, 0, 0}};
     std::vector<ElementSpec> elements;
     /// The analysis: `type` is its kind ("transient", ...), params its keys.
     ElementSpec scenario;

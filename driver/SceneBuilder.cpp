@@ -19,12 +19,18 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
                                           : scene->findBody(b.joint.parent)->mobod;
         // A shaft with polar moment J about z: Inertia(J/2, J/2, J) keeps the
         // triangle inequality (a thin disc); Inertia(0, 0, J) would throw.
-        const SimTK::Inertia inertia(b.inertia / 2, b.inertia / 2, b.inertia);
         // Simbody refuses a massless body with inertia. A body whose mass
         // centre is on its pin axis turns the same whatever its mass, so an
         // omitted mass becomes a stated placeholder.
         const double mass = b.mass > 0 ? b.mass : kPlaceholderMass;
-        const SimTK::Body::Rigid body(SimTK::MassProperties(mass, SimTK::Vec3(0), inertia));
+        const SimTK::Vec3 com(b.massCentre[0], b.massCentre[1], b.massCentre[2]);
+        // `inertia` is about the joint axis; the central polar moment follows
+        // from the parallel-axis theorem (the reader checked it is > 0).
+        const double offAxis2 = com[0] * com[0] + com[1] * com[1];
+        const double central = b.inertia - mass * offAxis2;
+        const SimTK::Inertia inertia =
+            SimTK::Inertia(central / 2, central / 2, central) + SimTK::Inertia(com, mass);
+        const SimTK::Body::Rigid body(SimTK::MassProperties(mass, com, inertia));
         const SimTK::Vec3 location(b.joint.location[0], b.joint.location[1], b.joint.location[2]);
         SimTK::MobilizedBody::Pin pin(parent,
                                       SimTK::Transform(location), body, SimTK::Transform());
@@ -33,6 +39,11 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
                     b.mass > 0 ? "declared in the model file"
                                : "declared in the model file; no mass given, 1 kg placeholder on the axis "
                                  "(no effect on rotation)");
+    }
+    const SimTK::Vec3 g(spec.gravity[0], spec.gravity[1], spec.gravity[2]);
+    if (g.norm() > 0) {
+        SimTK::Force::UniformGravity(scene->forces(), scene->matter(), g);
+        scene->note("gravity " + std::to_string(g.norm()) + " m/s^2", "gravity: in the model file");
     }
     const ElementRegistry& registry = ElementRegistry::instance();
     for (const auto& e : spec.elements) {
@@ -59,6 +70,7 @@ SimTK::State initialState(const Scene& scene, const ModelSpec& spec) {
         body->mobod.setOneQ(state, SimTK::MobilizerQIndex(0), b.initialAngle);
         body->mobod.setOneU(state, SimTK::MobilizerUIndex(0), b.initialSpeed);
     }
+    for (const auto& init : scene.initializers()) init(state);
     scene.system().realize(state, SimTK::Stage::Position);
     return state;
 }

@@ -19,6 +19,9 @@ std::string timeText(double t) {
 // Multistep methods (CPodes) otherwise stop with "mxstep steps taken" on
 // long stiff runs; the run's own end time bounds the work instead.
 constexpr int kInternalStepLimit = 10'000'000;
+// Relative change of kept reactions (iterated journal loads) that ends
+// their iteration at a step end.
+constexpr double kLaggedTolerance = 1e-12;
 // Fixed-step integrators need a step; used when max_step is not given [s].
 constexpr double kDefaultFixedStep = 1e-4;
 
@@ -51,6 +54,14 @@ void Simulation::initialize(const SimTK::State& start) {
     // Switchings due at the start time take effect before the first step.
     for (const auto& e : m_scene.switchEvents())
         if (e.time <= state.getTime()) e.apply(state);
+    // Kept reactions (journal loads) start consistent with the start state,
+    // lagged or not: a lagged load of 0 would give the first step no friction.
+    for (int k = 0; !m_scene.laggedValues().empty(); ++k) {
+        double change = 0;
+        for (const auto& v : m_scene.laggedValues()) change = std::max(change, v.refresh(state));
+        if (!(change > kLaggedTolerance)) break;
+        if (k >= 50) throw AnalysisError("kept reactions do not converge at the start");
+    }
     m_integrator = makeIntegrator(m_scene.system(), m_settings.name);
     m_integrator->setAccuracy(m_settings.accuracy);
     m_integrator->setInternalStepLimit(kInternalStepLimit);
@@ -146,7 +157,10 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             }
             if (!integ.isStateInterpolated()) lastWatch = value;
         }
-        if (!integ.isStateInterpolated()) lastStepEnd = s;
+        if (!integ.isStateInterpolated()) {
+            lastStepEnd = s;
+            if (makeLaggedValuesConsistent()) lastStepEnd = integ.getState();
+        }
 
         const double t = s.getTime();
         const bool atSample = std::abs(t - nextSample) <= 1e-12 * std::max(1.0, std::abs(t));
@@ -172,6 +186,34 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         }
         if (status == SimTK::Integrator::EndOfSimulation) return std::nullopt;
     }
+}
+
+bool Simulation::makeLaggedValuesConsistent() {
+    bool any = false;
+    for (const auto& v : m_scene.laggedValues()) any = any || v.eachStep;
+    if (!any) return false;
+    // Not interpolated here: the advanced state is the step end.
+    SimTK::State& s = m_integrator->updAdvancedState();
+    const double t = s.getTime();
+    double change = 0;
+    bool changed = false;
+    for (int k = 0;; ++k) {
+        change = 0;
+        for (const auto& v : m_scene.laggedValues())
+            if (v.eachStep) change = std::max(change, v.refresh(s));
+        if (!(change > kLaggedTolerance)) break;
+        changed = true;
+        if (k >= 50)
+            throw AnalysisError("kept reactions do not converge at " + timeText(t) + " (relative change " +
+                                std::to_string(change) + " after 50 iterations)");
+    }
+    if (!std::isfinite(change)) throw AnalysisError("kept reactions are not finite at " + timeText(t));
+    if (!changed) return false;
+    // A discrete change, as an event handler makes: the integrator keeps
+    // its step size and restarts its derivative evaluation.
+    m_integrator->reinitialize(SimTK::Stage::Dynamics, false);
+    ++m_extra.consistencyRestarts;
+    return true;
 }
 
 SimTK::State Simulation::locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch) {

@@ -33,6 +33,7 @@ struct RunStatistics {
     long steps = 0;
     long realizations = 0;
     long stepAttempts = 0;
+    long consistencyRestarts = 0;  ///< restarts after iterating kept reactions
 };
 
 class Simulation {
@@ -77,6 +78,10 @@ private:
     RunStatistics m_extra;  // work done by crossing searches
 
     void checkFinite(const SimTK::State& state) const;
+    /// Iterates the scene's each-step lagged values (iterated journal
+    /// reactions) to consistency at the current step end and restarts the
+    /// integrator there if they changed; true if it did.
+    bool makeLaggedValuesConsistent();
     void accumulateStatistics();
     SimTK::State locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch);
 };

@@ -240,8 +240,8 @@ SweepPlan makeLatinHypercube(std::vector<SweepAxis> ranges, std::size_t n, unsig
     return plan;
 }
 
-SweepSummary runSweep(const SweepPlan& plan, const SweepOptions& options,
-                      const std::function<void(std::size_t, std::size_t, std::size_t)>& progress) {
+SweepPart runSweepPart(const SweepPlan& plan, const SweepOptions& options,
+                       const std::function<void(std::size_t, std::size_t, std::size_t)>& progress) {
     ensureDirectory(options.outDir + "/points");
     ElementRegistry::instance();  // built once, before the workers read it
 
@@ -292,7 +292,33 @@ SweepSummary runSweep(const SweepPlan& plan, const SweepOptions& options,
     for (auto& t : threads) t.join();
     if (fatal) std::rethrow_exception(fatal);
     summary.run = todo.size();
-    return writeTable(options.outDir, points, summary);
+    SweepPart part;
+    part.summary = summary;
+    for (const auto& p : points) part.points.push_back(p.dump(1) + "\n");  // the point file's text
+    return part;
+}
+
+SweepSummary runSweep(const SweepPlan& plan, const SweepOptions& options,
+                      const std::function<void(std::size_t, std::size_t, std::size_t)>& progress) {
+    const SweepPart part = runSweepPart(plan, options, progress);
+    return writeSweepTable(options.outDir, part.points, part.summary, false);
+}
+
+SweepSummary writeSweepTable(const std::string& outDir, const std::vector<std::string>& texts,
+                             SweepSummary summary, bool writePoints) {
+    std::vector<Json> points;
+    for (const auto& text : texts) {
+        Json p = Json::parse(text, nullptr, false);
+        if (p.is_discarded() || !p.contains("index") || !p.contains("inputs"))
+            throw SpecError({outDir, 1, 1}, "<point>", "not a sweep point");
+        points.push_back(std::move(p));
+    }
+    if (writePoints) {
+        ensureDirectory(outDir + "/points");
+        for (std::size_t k = 0; k < points.size(); ++k)
+            writeFileAtomically(pointFile(outDir, points[k]["index"].get<std::size_t>()), texts[k]);
+    }
+    return writeTable(outDir, points, summary);
 }
 
 SweepSummary mergeSweeps(const std::vector<std::string>& dirs, const std::string& outDir) {

@@ -65,6 +65,22 @@ struct SweepSummary {
 SweepSummary runSweep(const SweepPlan& plan, const SweepOptions& options,
                       const std::function<void(std::size_t, std::size_t, std::size_t)>& progress = {});
 
+/// One shard's share of a sweep, without the table: its points (the text of
+/// their point files) in point order. runSweep is runSweepPart followed by
+/// writeSweepTable; the MPI mode gathers the parts of all ranks in between.
+struct SweepPart {
+    SweepSummary summary;            ///< run and resumed; total and failed are the table's
+    std::vector<std::string> points;  ///< JSON text of each point file
+};
+SweepPart runSweepPart(const SweepPlan& plan, const SweepOptions& options,
+                       const std::function<void(std::size_t, std::size_t, std::size_t)>& progress = {});
+
+/// Writes DIR/sweep.csv from point-file texts (any order; sorted by index),
+/// and, when `writePoints`, DIR/points/NNNNNN.json of each. Throws
+/// OutputError, or SpecError when a text is not a point.
+SweepSummary writeSweepTable(const std::string& outDir, const std::vector<std::string>& points,
+                             SweepSummary summary, bool writePoints);
+
 /// Joins the point files of several sweep directories into `outDir`.
 SweepSummary mergeSweeps(const std::vector<std::string>& dirs, const std::string& outDir);
 

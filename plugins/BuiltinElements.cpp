@@ -6,6 +6,11 @@ void registerInductionMotor(ElementRegistry& registry);
 void registerTorsionalCoupling(ElementRegistry& registry);
 void registerResistanceTorque(ElementRegistry& registry);
 void registerPeriodicLoad(ElementRegistry& registry);
+void registerGearMesh(ElementRegistry& registry);
+void registerSegmentCharge(ElementRegistry& registry);
+void registerCarrierDrive(ElementRegistry& registry);
+void registerJournalFriction(ElementRegistry& registry);
+void registerJointReaction(ElementRegistry& registry);
 void registerDiscDrag(ElementRegistry& registry);
 void registerFlexibleRotor(ElementRegistry& registry);
 
@@ -14,6 +19,11 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerTorsionalCoupling(registry);
     registerResistanceTorque(registry);
     registerPeriodicLoad(registry);
+    registerGearMesh(registry);
+    registerSegmentCharge(registry);
+    registerCarrierDrive(registry);
+    registerJournalFriction(registry);
+    registerJointReaction(registry);
     registerDiscDrag(registry);
     registerFlexibleRotor(registry);
 }

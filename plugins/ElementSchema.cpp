@@ -10,6 +10,7 @@ std::string SpecError::formatted() const {
     out << (m_where.file.empty() ? "<input>" : m_where.file) << ':' << m_where.line << ':'
         << m_where.column << ": error: " << (m_key.empty() ? "<document>" : m_key) << ": "
         << what();
+    if (!m_where.includedFrom.empty()) out << " (included from " << m_where.includedFrom << ")";
     std::string line = out.str();
     // One line, always: a reason quoting user text must not break it.
     std::replace(line.begin(), line.end(), '\n', ' ');

@@ -10,15 +10,22 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace milldyn {
 
 /// Where a value came from, for diagnostics ("file:line:col"). 1-based.
 struct SourceLocation {
+    SourceLocation() = default;
+    SourceLocation(std::string file_, int line_, int column_, std::string includedFrom_ = {})
+        : file(std::move(file_)), line(line_), column(column_), includedFrom(std::move(includedFrom_)) {}
     std::string file;
     int line = 0;
     int column = 0;
+    /// For a value from an included part file: the include chain,
+    /// "a.yaml:4:5" or "b.yaml:2:3, included from a.yaml:4:5" (else empty).
+    std::string includedFrom;
 };
 
 /// Thrown for bad input; carries the location and the key so the driver can

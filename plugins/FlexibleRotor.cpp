@@ -48,7 +48,6 @@ FlexibleRotor::FlexibleRotor(SimTK::SimbodyMatterSubsystem& matter, const SimTK:
     requireNonNegative("disc_unbalance", p.discUnbalance);
     requireNonNegative("bearing_damping", p.bearingDamping);
     requireNonNegative("stiffness_damping", p.stiffnessDamping);
-    requireNonNegative("gravity", p.gravity);
     if (p.segments < 2) throw std::invalid_argument("FlexibleRotor: segments must be >= 2");
     if (p.discs < 0) throw std::invalid_argument("FlexibleRotor: discs must be >= 0");
     if (p.discs > 0 && getDiscPosition(p.discs - 1) > getLength() + 1e-12)
@@ -117,8 +116,6 @@ FlexibleRotor::FlexibleRotor(SimTK::SimbodyMatterSubsystem& matter, const SimTK:
             inertia += SimTK::Inertia(part * Id, part * Id, part * Ip) + SimTK::Inertia::pointMassAt(c, part * md);
         }
         const SimTK::Vec3 com = moment / mass;
-        m_segmentMass.push_back(mass);
-        m_segmentCom.push_back(com);
         const SimTK::Body::Rigid body(SimTK::MassProperties(mass, com, inertia));
         if (i == 0)
             m_segments.push_back(SimTK::MobilizedBody::Bushing(parent, SimTK::Transform(), body, SimTK::Transform()));
@@ -202,9 +199,6 @@ void FlexibleRotor::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::Spati
         const int i = segmentAt(bearing == 0 ? 0.0 : m_params.span, local);
         m_segments[i].applyForceToBodyPoint(s, SimTK::Vec3(0, 0, local), f, bodyForces);
     }
-    for (int i = 0; i < getNumSegments(); ++i)
-        m_segments[i].applyForceToBodyPoint(s, m_segmentCom[i], SimTK::Vec3(0, -m_segmentMass[i] * m_params.gravity, 0),
-                                            bodyForces);
 }
 
 SimTK::Real FlexibleRotor::calcPotentialEnergy(const SimTK::State& s) const {
@@ -215,7 +209,6 @@ SimTK::Real FlexibleRotor::calcPotentialEnergy(const SimTK::State& s) const {
             for (int j = 0; j < 2; ++j)
                 pe += 0.5 * m_bending[i] * std::pow(b.getOneQ(s, SimTK::MobilizerQIndex(j)), 2);
         pe += 0.5 * m_torsion[i] * std::pow(b.getOneQ(s, SimTK::MobilizerQIndex(2)), 2);
-        pe += m_segmentMass[i] * m_params.gravity * b.findStationLocationInGround(s, m_segmentCom[i])[1];
     }
     for (int bearing = 0; bearing < 2; ++bearing) {
         SimTK::Vec3 v;
@@ -280,7 +273,6 @@ void buildFlexibleRotor(const ElementSpec& spec, Scene& scene) {
     p.bearingStiffness = spec.number("bearing_stiffness");
     p.bearingDamping = spec.number("bearing_damping");
     p.stiffnessDamping = spec.number("stiffness_damping");
-    p.gravity = spec.number("gravity");
     if (p.discs > 0 && p.span + p.firstDiscOffset + (p.discs - 1) * p.discPitch > p.span + p.overhang + 1e-12)
         throw spec.error("overhang", "the last disc lies beyond the shaft end");
     auto* impl = new FlexibleRotor(scene.matter(), drive.mobod, p);
@@ -360,7 +352,6 @@ void registerFlexibleRotor(ElementRegistry& registry) {
         P::quantity("bearing_stiffness", "N/m", "radial stiffness of each bearing").optional(2e8).above(0),
         P::quantity("bearing_damping", "N*s/m", "radial viscous damping of each bearing").optional(0.0).atLeast(0),
         P::quantity("stiffness_damping", "s", "β: joint damping = β·joint stiffness").optional(0.0).atLeast(0),
-        P::quantity("gravity", "m/s^2", "g along ground −y on the rotor's bodies").optional(9.80665).atLeast(0),
         P::choice("drag_law", {"none", "laminar", "turbulent"}, "disc drag (DiscDrag on each disc)").optional("none"),
         P::quantity("medium_density", "kg/m^3", "ρ_c of the medium (drag)").optional(1000.0).above(0),
         P::quantity("medium_viscosity", "m^2/s", "ν of the medium (drag)").optional(1e-6).above(0),

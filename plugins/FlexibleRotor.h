@@ -37,7 +37,6 @@ struct FlexibleRotorParams {
     double bearingStiffness = 0;  ///< radial (and, at A, axial) [N/m] > 0
     double bearingDamping = 0;    ///< radial viscous [N*s/m] >= 0
     double stiffnessDamping = 0;  ///< β: joint damping = β·joint stiffness [s] >= 0
-    double gravity = 0;         ///< along −y of ground [m/s^2] >= 0
 };
 
 /**
@@ -60,7 +59,9 @@ struct FlexibleRotorParams {
  *     m_d D²/8, diametral m_d(3D²/4 + t²)/12, mass centre at e = unbalance/m_d
  *     off the axis; half of each disc on each segment meeting at its node
  *     (their mean rotation is the beam's slope there, to O(h²));
- *   gravity m·g on every segment at its mass centre.
+ *   gravity: the model's own (`gravity:` at the top of the model file, a
+ *     Force::UniformGravity on every body); the deflection probes measure
+ *     along ground −y, so give it as [0, −g, 0].
  * </pre>
  *
  * This is the Hencky bar chain: its nodal deflections are the central
@@ -96,7 +97,8 @@ public:
     /// Displacement of the shaft centreline at z from its undeformed place,
     /// in ground [m] (Stage::Position).
     SimTK::Vec3 calcDisplacement(const SimTK::State& state, double z) const;
-    /// Component along gravity (−y) [m]: the static deflection.
+    /// Component along ground −y (gravity's direction in the shipped
+    /// models) [m]: the static deflection.
     double calcDeflection(const SimTK::State& state, double z) const;
     /// Component along ground x (the other bending plane) [m].
     double calcLateral(const SimTK::State& state, double z) const;
@@ -115,8 +117,6 @@ private:
     FlexibleRotorParams m_params;
     SimTK::MobilizedBody m_drive;
     std::vector<SimTK::MobilizedBody> m_segments;
-    std::vector<double> m_segmentMass;
-    std::vector<SimTK::Vec3> m_segmentCom;  // in the segment frame [m]
     SimTK::Vec3 m_base;                     // bearing A in ground [m]
     std::vector<double> m_nodes;            // z of the nodes [m]
     std::vector<double> m_bending, m_torsion;  // joint i's springs [N*m/rad] (index 0: drive end)

@@ -79,7 +79,8 @@ public:
     SimTK::GeneralForceSubsystem& forces() { return m_forces; }
 
     void addBody(const std::string& name, const SimTK::MobilizedBody& mobod);
-    /// nullptr when no body has that name.
+    /// nullptr when no body has that name. addBody may move the list: do not
+    /// keep the pointer across it.
     const SceneBody* findBody(const std::string& name) const;
     const std::vector<SceneBody>& bodies() const { return m_bodies; }
 
@@ -140,6 +141,38 @@ public:
     /// Switches every registered excitation on or off in `state`.
     void setExcitationsOn(SimTK::State& state, bool on) const;
 
+    /// Sets an element's part of the initial state (a gear's planet angle
+    /// from its carrier, a charge's lag), after the bodies' own angles and
+    /// speeds; run in the order the elements were built.
+    void addInitializer(std::function<void(SimTK::State&)> f) { m_initializers.push_back(std::move(f)); }
+    const std::vector<std::function<void(SimTK::State&)>>& initializers() const { return m_initializers; }
+
+    /// Unknowns a kinetostatic analysis must solve for besides the
+    /// accelerations: a torque whose value makes `residual` zero (a held
+    /// charge's wall torque: residual = its acceleration in the carrier
+    /// frame). `set` writes the torque into the state (a discrete variable).
+    struct KinetostaticUnknown {
+        std::string name;
+        std::function<void(SimTK::State&, double)> set;
+        std::function<double(const SimTK::State&)> get;
+        std::function<double(const SimTK::State&)> residual;  ///< at Stage::Acceleration
+    };
+    void addKinetostaticUnknown(KinetostaticUnknown u) { m_kinetostaticUnknowns.push_back(std::move(u)); }
+    const std::vector<KinetostaticUnknown>& kinetostaticUnknowns() const { return m_kinetostaticUnknowns; }
+
+    /// A value an element keeps from the last accepted step (a journal's
+    /// reaction). `refresh` realizes the state, copies the current value
+    /// into the kept one and returns the relative change; kinetostatic
+    /// analyses iterate it to consistency at each instant, and so does the
+    /// Simulation after every step when `eachStep` is set.
+    struct LaggedValue {
+        std::string name;
+        bool eachStep = false;
+        std::function<double(SimTK::State&)> refresh;
+    };
+    void addLaggedValue(LaggedValue v) { m_laggedValues.push_back(std::move(v)); }
+    const std::vector<LaggedValue>& laggedValues() const { return m_laggedValues; }
+
     void note(const std::string& what, const std::string& why) { m_notes.push_back({what, why}); }
     const std::vector<BuildNote>& notes() const { return m_notes; }
 
@@ -164,6 +197,9 @@ private:
     std::vector<SpeedRelation> m_speedRelations;
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_switchables;
     std::vector<BuildNote> m_notes;
+    std::vector<std::function<void(SimTK::State&)>> m_initializers;
+    std::vector<KinetostaticUnknown> m_kinetostaticUnknowns;
+    std::vector<LaggedValue> m_laggedValues;
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_excitations;
 };
 

@@ -8,6 +8,8 @@ packages=(
   libsimbody-dev libeigen3-dev libyaml-cpp-dev nlohmann-json3-dev
   googletest libgtest-dev
   gnuplot-nox fonts-dejavu-core
+  openmpi-bin libopenmpi-dev
+  chromium python3   # the validation report's render test (tests/report/render_check.sh)
 )
 
 missing=()

@@ -7,8 +7,11 @@ scripts/install-deps.sh
 # bool is recoverable only so that tests/sanitizers/ubsan.supp can apply (suppressions
 # need recoverable checks); halt_on_error=1 below still stops on any other report.
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize-recover=bool -fno-omit-frame-pointer"
+# Without the MPI mode (sweep_mpi skips): LeakSanitizer commonly reports Open
+# MPI's own MPI_Init allocations, which are not ours to suppress blindly. Not
+# yet tried with MPI on; the MPI code is thin (driver/SweepMpi.cpp).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DMILLDYN_MPI=OFF >/dev/null
 cmake --build build-asan -j"$(nproc)"
 supp="$PWD/tests/sanitizers"
 cd build-asan

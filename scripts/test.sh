@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Set-up from nothing, then the whole test suite (unit and validation).
-# Cases labelled "slow" (none yet) are left out; run them with: cd build && ctest -L slow
+# Cases labelled "slow" are left out (today: report_full, the full validation report in
+# headless Chromium); run them with: cd build && ctest -L slow
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh

@@ -113,6 +113,24 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
     };
     schemas["frequency_response"] = response;
 
+    ElementSchema kin;
+    kin.type = "kinetostatic";
+    kin.doc = "Loads at prescribed carrier angles: one realization each, no time integration.";
+    kin.params = {
+        P::body("carrier", "body whose angle is swept (default: the first)").optional(""),
+        P::quantity("angle_from", "rad", "first carrier angle").optional(0.0),
+        P::quantity("angle_to", "rad", "last carrier angle").optional(2 * M_PI),
+        P::quantity("angle_points", "1", "angles, evenly spaced, both ends included").optional(37.0).atLeast(1).atMost(
+            1e7),
+        P::quantity("carrier_speed", "rad/s", "carrier speed ω1").optional(0.0),
+        P::quantity("time", "s", "instant of the drive laws (ε(t) of a CarrierDrive)").optional(0.0).atLeast(0),
+        P::quantity("tolerance", "1", "relative tolerance of wall torques and journal reactions")
+            .optional(1e-12)
+            .above(0)
+            .below(1),
+    };
+    schemas["kinetostatic"] = kin;
+
     ElementSchema map;
     map.type = "resonance_map";
     map.doc = "Dynamic factor of every coupling torque against rotor speed, the load harmonics following "
@@ -190,6 +208,7 @@ AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
     if (spec.scenario.type == "transient") return runTransient(spec, progress);
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
     if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
+    if (spec.scenario.type == "kinetostatic") return runKinetostatic(spec, progress);
     if (spec.scenario.type == "static_deflection") return runStaticDeflection(spec, progress);
     if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
     if (spec.scenario.type == "resonance_map") return runResonanceMap(spec, progress);

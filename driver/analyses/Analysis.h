@@ -82,6 +82,7 @@ AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress = {
 AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn& progress);

@@ -88,13 +88,13 @@ std::vector<std::string> writeResultFiles(const std::string& dir, const ModelSpe
     return written;
 }
 
-namespace {
-
 std::string quoteForGnuplot(const std::string& s) {
     std::string out = "'";
     for (char c : s) out += (c == '\'') ? std::string("''") : std::string(1, c);
     return out + "'";
 }
+
+namespace {
 
 std::string quoteForShell(const std::string& s) {
     std::string out = "'";
@@ -104,21 +104,39 @@ std::string quoteForShell(const std::string& s) {
 
 }  // namespace
 
+bool gnuplotAvailable() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
+
+bool renderGnuplotPng(const std::string& png, const std::string& commands, int width, int height) {
+    const std::string tmpPng = temporaryNameBeside(png);
+    std::ostringstream script;
+    script << "set terminal pngcairo noenhanced size " << width << "," << height << " font 'DejaVu Sans,10'\n"
+           << "set output " << quoteForGnuplot(tmpPng) << "\n"
+           << commands;
+    const std::string scriptPath = temporaryNameBeside(png + ".gp");
+    writeFileAtomically(scriptPath, script.str());
+    const std::string cmd = "gnuplot " + quoteForShell(scriptPath) + " 2>/dev/null";
+    const int rc = std::system(cmd.c_str());
+    std::remove(scriptPath.c_str());
+    if (rc != 0) {
+        std::remove(tmpPng.c_str());
+        return false;
+    }
+    commitFile(tmpPng, png);
+    return true;
+}
+
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning) {
     std::vector<std::string> written;
-    if (std::system("command -v gnuplot >/dev/null 2>&1") != 0) {
+    if (!gnuplotAvailable()) {
         warning = "gnuplot not found: no plots written (scripts/install-deps installs it)";
         return written;
     }
     for (const auto& plot : result.plots) {
         if (plot.second.empty()) continue;
         const std::string png = dir + "/" + plot.first + ".png";
-        const std::string tmpPng = temporaryNameBeside(png);
         std::ostringstream script;
-        script << "set terminal pngcairo noenhanced size 1000,560 font 'DejaVu Sans,10'\n"
-               << "set output " << quoteForGnuplot(tmpPng) << "\n"
-               << "set datafile separator ','\nset key outside right\nset grid\n"
+        script << "set datafile separator ','\nset key outside right\nset grid\n"
                << (result.plotXLabel.find("frequency") != std::string::npos ? "set logscale x\n" : "")
                << "set xlabel " << quoteForGnuplot(result.plotXLabel) << "\nset ylabel " << quoteForGnuplot(plot.first + " [" +
                                                                             result.columnUnits[plot.second[0]] + "]")
@@ -129,17 +147,10 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
                    << " with lines lw 1.5 title " << quoteForGnuplot(result.columnNames[col]);
         }
         script << "\n";
-        const std::string scriptPath = temporaryNameBeside(dir + "/" + plot.first + ".gp");
-        writeFileAtomically(scriptPath, script.str());
-        const std::string cmd = "gnuplot " + quoteForShell(scriptPath) + " 2>/dev/null";
-        const int rc = std::system(cmd.c_str());
-        std::remove(scriptPath.c_str());
-        if (rc != 0) {
-            std::remove(tmpPng.c_str());
+        if (!renderGnuplotPng(png, script.str(), 1000, 560)) {
             warning = "gnuplot failed for plot " + plot.first;
             continue;
         }
-        commitFile(tmpPng, png);
         written.push_back(png);
     }
     return written;

@@ -36,6 +36,15 @@ std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& resul
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning);
 
+/// A string as a gnuplot string literal.
+std::string quoteForGnuplot(const std::string& s);
+/// Whether gnuplot is on the PATH.
+bool gnuplotAvailable();
+/// Runs gnuplot on `commands` (everything after the terminal and output
+/// lines) to draw `png` (pngcairo, width x height pixels), atomically.
+/// Returns false, leaving nothing behind, when gnuplot fails.
+bool renderGnuplotPng(const std::string& png, const std::string& commands, int width, int height);
+
 /// A number in the shortest form that reads back to the same double.
 std::string formatDouble(double v);
 

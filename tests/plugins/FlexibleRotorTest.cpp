@@ -23,6 +23,7 @@ constexpr double kPi = 3.14159265358979323846;
 // 0.04 m pitch, overhang 0.18 m (0.08 + 2·0.04 + 0.02).
 const char* kModel = R"(format_version: 1
 name: rotor test
+gravity: [0 m/s^2, -9.80665 m/s^2, 0 m/s^2]
 bodies:
   - {name: pulley, inertia: 0.005 kg*m^2, mass: 2 kg, joint: {type: pin}}
 elements:
@@ -124,7 +125,7 @@ TEST(FlexibleRotor, DiameterOutsideTheFitIsAnError) {
     } catch (const SpecError& e) {
         EXPECT_EQ(e.key(), "rotor.shaft_diameter");
         EXPECT_TRUE(test::contains(e.what(), "eq (2)")) << e.what();
-        EXPECT_EQ(e.where().line, 6);  // not written: the element's own place
+        EXPECT_EQ(e.where().line, 7);  // not written: the element's own place
     }
 }
 

@@ -19,6 +19,8 @@ const ElementSpec& rotorElement(const ModelSpec& spec);
 
 /// The FlexibleRotor element's rotor as the oracle states it (adapter).
 oracles::BeadMillShaft oracleShaft(const ElementSpec& rotor);
+/// g [m/s^2] of a model whose gravity is along −y (throws otherwise).
+double gravityOf(const ModelSpec& spec);
 /// Running speed at 10 m/s disc tip speed [rad/s].
 double runningSpeed(const ElementSpec& rotor);
 

@@ -12,6 +12,7 @@
 
 #include "driver/ModelFile.h"
 #include "driver/analyses/Analysis.h"
+#include "validation/cases/RollCrusherCases.h"
 #include "validation/cases/ValidationCases.h"
 #include "validation/oracles/RollCrusherOracle.h"
 
@@ -60,6 +61,7 @@ struct ReflectedChain {
     oc::RollCrusherChainParams chain;
     std::vector<std::string> bodies;   // chain order
     std::vector<std::string> couplings;
+    std::vector<double> ratios;        // ω_motor / ω_body, chain order
     double loadReflection = 1;         // row torque → motor-shaft torque
 };
 
@@ -76,6 +78,7 @@ ReflectedChain reflectToMotor(const ModelSpec& spec) {
     double ratio = 1;  // ω_motor / ω_current
     r.bodies.push_back(current);
     r.chain.inertias.push_back(spec.findBody(current)->inertia);
+    r.ratios.push_back(1);
     for (bool advanced = true; advanced;) {
         advanced = false;
         for (const auto& e : spec.elements)
@@ -86,6 +89,7 @@ ReflectedChain reflectToMotor(const ModelSpec& spec) {
                 current = e.names("bodies")[1];
                 r.bodies.push_back(current);
                 r.couplings.push_back(e.name);
+                r.ratios.push_back(ratio);
                 r.chain.inertias.push_back(spec.findBody(current)->inertia / (ratio * ratio));
                 advanced = true;
                 break;
@@ -336,6 +340,34 @@ void approximationSweepCase(std::vector<ValidationRow>& rows) {
     }
 }
 
+// Load events per revolution, as in the model's resonance_map scenario.
+constexpr double kLoadEventsPerRevolution = 8;
+
+/// A resonance_map scenario over the speeds where harmonics 1..K of the
+/// load reach beta0 [rad/s], and the span around them.
+void setResonanceMapScenario(ModelSpec& spec, double beta0, int points) {
+    const ElementSpec& load = elementOfType(spec, "PeriodicLoad");
+    const double z = kLoadEventsPerRevolution;
+    const std::size_t K = load.numbers("amplitudes").size();
+    const std::string name = load.name;
+    spec.scenario = defaultScenario("resonance_map");
+    spec.scenario.params["load"].text = name;
+    spec.scenario.params["load_events_per_revolution"].number = z;
+    spec.scenario.params["speed_min"].number = 0.5 * beta0 / (z * K);
+    spec.scenario.params["speed_max"].number = 1.5 * beta0 / z;
+    spec.scenario.params["points"].number = points;
+}
+
+/// DF(Ω) = Σ b_k·D(k·z·Ω)/Σ b_k at rotor speed `w` [rad/s].
+double oracleDynamicFactor(const oc::RollCrusherTwoMassOracle& oracle, const std::vector<double>& b, double w) {
+    double sum = 0, bSum = 0;
+    for (std::size_t k = 0; k < b.size(); ++k) {
+        sum += b[k] * oracle.calcHarmonicResponse((k + 1) * kLoadEventsPerRevolution * w).amplitude;
+        bSum += b[k];
+    }
+    return sum / bSum;
+}
+
 /// The resonance map of the 2-mass model with rows in phase: at each speed
 /// the harmonics superpose, DF(Ω) = Σ b_k·D(k·z·Ω)/Σ b_k, with D the
 /// oracle's corrected amplitude (the in-phase rows reflect to one load).
@@ -345,24 +377,12 @@ void resonanceMapCase(std::vector<ValidationRow>& rows) {
     const ReflectedChain rc = reflectToMotor(spec);
     const oc::RollCrusherTwoMassOracle oracle = twoMassOracle(rc);
     const ElementSpec& load = elementOfType(spec, "PeriodicLoad");
-    const auto& b = load.numbers("amplitudes");
-    const double z = 8;  // load events per revolution, as in the model's resonance_map scenario
-    const double beta0 = oracle.getUndampedFrequency();
-    spec.scenario = defaultScenario("resonance_map");
-    spec.scenario.params["load"].text = load.name;
-    spec.scenario.params["load_events_per_revolution"].number = z;
-    // Speeds where harmonics 1..K reach beta0, and the span around them.
-    spec.scenario.params["speed_min"].number = 0.5 * beta0 / (z * b.size());
-    spec.scenario.params["speed_max"].number = 1.5 * beta0 / z;
-    spec.scenario.params["points"].number = 41;
+    const std::vector<double> b = load.numbers("amplitudes");
+    setResonanceMapScenario(spec, oracle.getUndampedFrequency(), 41);
     const AnalysisResult r = runAnalysis(spec);
-    double bSum = 0;
-    for (double v : b) bSum += v;
     for (std::size_t i = 0; i < r.rows.size(); i += 8) {
         const double w = r.rows[i][0];
-        double expected = 0;
-        for (std::size_t k = 0; k < b.size(); ++k) expected += b[k] * oracle.calcHarmonicResponse((k + 1) * z * w).amplitude;
-        expected /= bSum;
+        const double expected = oracleDynamicFactor(oracle, b, w);
         rows.push_back(compareRow(name, "reducer dynamic factor at rotor speed " + fmt(w) + " rad/s", "1",
                                   r.rows[i][2], expected, kLinearTolerance,
                                   "harmonics b_k of the model's load at k*8*Omega, superposed at their worst phase"));
@@ -370,6 +390,96 @@ void resonanceMapCase(std::vector<ValidationRow>& rows) {
 }
 
 }  // namespace
+
+RollCrusherResonanceCurves computeRollCrusherResonanceMap(int points) {
+    RollCrusherResonanceCurves c;
+    ModelSpec spec = readCrusher("2-mass", "in_phase");
+    const oc::RollCrusherTwoMassOracle oracle = twoMassOracle(reflectToMotor(spec));
+    const std::vector<double> b = elementOfType(spec, "PeriodicLoad").numbers("amplitudes");
+    setResonanceMapScenario(spec, oracle.getUndampedFrequency(), points);
+    c.threshold = spec.scenario.number("threshold");
+    const AnalysisResult two = runAnalysis(spec);
+    ModelSpec chain = readCrusher("10-mass", "in_phase");
+    chain.scenario = spec.scenario;  // the same speeds
+    const AnalysisResult ten = runAnalysis(chain);
+    for (std::size_t i = 0; i < two.rows.size(); ++i) {
+        c.speedRpm.push_back(two.rows[i][1]);
+        c.multibody2.push_back(two.rows[i][2]);
+        c.oracle2.push_back(oracleDynamicFactor(oracle, b, two.rows[i][0]));
+        c.multibody10.push_back(ten.rows[i][2]);
+    }
+    return c;
+}
+
+RollCrusherModeShapes computeRollCrusherModeShapes(int modes) {
+    RollCrusherModeShapes out;
+    ModelSpec spec = readCrusher("10-mass", "staggered");
+    const ReflectedChain rc = reflectToMotor(spec);
+    const oc::RollCrusherChainOracle oracle(rc.chain);
+    spec.scenario = defaultScenario("linearize");
+    const AnalysisResult r = runAnalysis(spec);
+    out.bodies = rc.bodies;
+    // Chain position -> Simbody mobility (column of the mode-shape table).
+    std::vector<std::size_t> dof;
+    for (const auto& body : rc.bodies)
+        dof.push_back(std::find(r.dofNames.begin(), r.dofNames.end(), body) - r.dofNames.begin());
+    auto scaled = [](std::vector<double> v) {
+        double big = 0;
+        for (double x : v) big = std::abs(x) > std::abs(big) ? x : big;
+        for (double& x : v) x /= big;
+        return v;
+    };
+    const DataTable* freq = nullptr;
+    for (const auto& t : r.extraTables)
+        if (t.name == "modes") freq = &t;
+    double wMax = 0;
+    for (const auto& row : freq->rows) wMax = std::max(wMax, row[1]);
+    for (std::size_t m = 0; m < freq->rows.size() && int(out.multibody.size()) < modes; ++m) {
+        if (freq->rows[m][1] <= 1e-6 * wMax) continue;  // the rigid rotation
+        std::vector<double> v;
+        for (std::size_t j = 0; j < dof.size(); ++j) v.push_back(r.rows.at(dof[j])[1 + m] * rc.ratios[j]);
+        out.multibody.push_back(scaled(v));
+        out.frequencyMultibody.push_back(freq->rows[m][1]);
+    }
+    const auto om = oracle.calcUndampedModes();
+    for (int j = 1; j <= modes && j < om.frequencies.size(); ++j) {
+        std::vector<double> v(om.shapes.rows());
+        for (Eigen::Index i = 0; i < om.shapes.rows(); ++i) v[i] = om.shapes(i, j);
+        out.oracle.push_back(scaled(v));
+        out.frequencyOracle.push_back(om.frequencies[j]);
+    }
+    return out;
+}
+
+RollCrusherResponseCurves computeRollCrusherResponse(int points) {
+    RollCrusherResponseCurves c;
+    ModelSpec spec = readCrusher("2-mass", "in_phase");
+    const ReflectedChain rc = reflectToMotor(spec);
+    const oc::RollCrusherTwoMassOracle oracle = twoMassOracle(rc);
+    const ElementSpec& load = elementOfType(spec, "PeriodicLoad");
+    const double loadScale = load.number("rows") * rc.loadReflection;  // as in twoMassResponseCase
+    c.beta0 = oracle.getUndampedFrequency();
+    c.printedResonances = oracle.calcPrintedResonanceFrequencies();
+    double lo = 0.1 * c.beta0, hi = 10 * c.beta0;
+    for (double p : c.printedResonances) lo = std::min(lo, 0.5 * p), hi = std::max(hi, 2 * p);
+    const std::string loadName = load.name;
+    spec.scenario = defaultScenario("frequency_response");
+    spec.scenario.params["load"].text = loadName;
+    spec.scenario.params["frequency_min"].number = lo;
+    spec.scenario.params["frequency_max"].number = hi;
+    spec.scenario.params["points"].number = points;
+    const AnalysisResult r = runAnalysis(spec);
+    std::size_t col = 0;  // the reducer's amplitude: the first ".amplitude" column
+    for (std::size_t k = 0; k < r.columnNames.size() && col == 0; ++k)
+        if (r.columnNames[k].size() > 10 && r.columnNames[k].compare(r.columnNames[k].size() - 10, 10, ".amplitude") == 0)
+            col = k;
+    for (const auto& row : r.rows) {
+        c.frequency.push_back(row[0]);
+        c.multibody.push_back(row[col] / loadScale);
+        c.oracle.push_back(oracle.calcHarmonicResponse(row[0]).amplitude);
+    }
+    return c;
+}
 
 std::vector<ValidationRow> rollCrusherCases(const std::string& filter) {
     std::vector<ValidationRow> rows;

@@ -26,7 +26,8 @@ ValidationRow compareRow(std::string caseName, std::string quantity, std::string
 
 std::vector<ValidationRow> runValidationCases(const std::string& filter) {
     std::vector<ValidationRow> all;
-    for (const CaseGroup& group : {CaseGroup(burrMillCases), CaseGroup(rollCrusherCases), CaseGroup(beadMillCases)}) {
+    for (const CaseGroup& group : {CaseGroup(burrMillCases), CaseGroup(rollCrusherCases), CaseGroup(planetaryGearCases),
+                                   CaseGroup(beadMillCases)}) {
         auto rows = group(filter);
         all.insert(all.end(), rows.begin(), rows.end());
     }

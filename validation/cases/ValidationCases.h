@@ -43,6 +43,7 @@ std::string modelsDirectory();
 
 std::vector<ValidationRow> burrMillCases(const std::string& filter);
 std::vector<ValidationRow> rollCrusherCases(const std::string& filter);
+std::vector<ValidationRow> planetaryGearCases(const std::string& filter);
 std::vector<ValidationRow> beadMillCases(const std::string& filter);
 
 }  // namespace milldyn

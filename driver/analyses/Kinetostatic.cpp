@@ -1,0 +1,161 @@
+// kinetostatic: loads at prescribed configurations, no time integration.
+// For each carrier angle the state is set (angle, speed, the instant of the
+// drive's law), the elements place what they drive (gears, charges), and
+// one realization gives the drive torque and the reactions. The unknowns
+// of one instant are solved first: held charges' wall torques (Newton) and
+// journals' lagged reactions (fixed point).
+
+#include "driver/SceneBuilder.h"
+#include "driver/analyses/Analysis.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace milldyn {
+
+namespace {
+
+/// Places every element's part of the state from the carrier's angle and
+/// speed (gears, charges).
+void placeMechanism(const Scene& scene, const SimTK::MobilizedBody& carrier, SimTK::State& s, double angle,
+                    double speed) {
+    carrier.setOneQ(s, SimTK::MobilizerQIndex(0), angle);
+    carrier.setOneU(s, SimTK::MobilizerUIndex(0), speed);
+    for (const auto& init : scene.initializers()) init(s);
+}
+
+/// Solves the scene's instantaneous unknowns in `s`; returns the number of
+/// outer iterations. Throws AnalysisError if they do not converge.
+int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
+    const SimTK::MultibodySystem& system = scene.system();
+    const auto& unknowns = scene.kinetostaticUnknowns();
+    const std::size_t n = unknowns.size();
+    for (int iter = 1; iter <= 100; ++iter) {
+        double worstResidual = 0;
+        if (n > 0) {
+            // The residuals (accelerations) are linear in the torques: one
+            // Newton step with a finite-difference Jacobian solves them.
+            Eigen::VectorXd x(n), r0(n);
+            system.realize(s, SimTK::Stage::Acceleration);
+            for (std::size_t i = 0; i < n; ++i) {
+                x[i] = unknowns[i].get(s);
+                r0[i] = unknowns[i].residual(s);
+            }
+            Eigen::MatrixXd J(n, n);
+            for (std::size_t j = 0; j < n; ++j) {
+                const double h = 1e-3 * std::max(1.0, std::abs(x[j]));
+                unknowns[j].set(s, x[j] + h);
+                system.realize(s, SimTK::Stage::Acceleration);
+                for (std::size_t i = 0; i < n; ++i) J(i, j) = (unknowns[i].residual(s) - r0[i]) / h;
+                unknowns[j].set(s, x[j]);
+            }
+            const Eigen::VectorXd dx = J.fullPivLu().solve(-r0);
+            for (std::size_t i = 0; i < n; ++i) {
+                unknowns[i].set(s, x[i] + dx[i]);
+                // Converged when Newton's correction is round-off on the
+                // torque (or on 1 N*m for a torque that is zero).
+                worstResidual = std::max(worstResidual, std::abs(dx[i]) / std::max(1.0, std::abs(x[i] + dx[i])));
+            }
+        }
+        double worstChange = 0;
+        for (const auto& lagged : scene.laggedValues()) worstChange = std::max(worstChange, lagged.refresh(s));
+        if (!(worstChange > tolerance) && !(worstResidual > tolerance)) {
+            if (!std::isfinite(worstChange) || !std::isfinite(worstResidual))
+                throw AnalysisError("kinetostatic: non-finite loads at carrier angle " +
+                                    std::to_string(s.getQ()[0]) + " rad");
+            system.realize(s, SimTK::Stage::Acceleration);
+            return iter;
+        }
+    }
+    throw AnalysisError("kinetostatic: wall torques and journal reactions did not converge in 100 iterations");
+}
+
+}  // namespace
+
+AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress) {
+    const ElementSpec& sc = spec.scenario;
+    auto scene = buildScene(spec);
+    const SceneBody& carrier = scenarioBody(*scene, sc, "carrier");
+    const double from = sc.number("angle_from"), to = sc.number("angle_to");
+    const int points = static_cast<int>(sc.number("angle_points"));
+    const double speed = sc.number("carrier_speed"), tolerance = sc.number("tolerance");
+
+    AnalysisResult result;
+    result.analysis = "kinetostatic";
+    result.tableName = "kinetostatics";
+    result.plotXLabel = "carrier angle [rad]";
+    result.columnNames = {"carrier_angle", "reduced_inertia"};
+    result.columnUnits = {"rad", "kg*m^2"};
+    for (const auto& p : scene->probes()) {
+        result.columnNames.push_back(p.name);
+        result.columnUnits.push_back(p.unit);
+    }
+
+    SimTK::State state = initialState(*scene, spec);
+    state.setTime(sc.number("time"));
+    long iterations = 0;
+    for (int k = 0; k < points; ++k) {
+        const double angle = points == 1 ? from : from + (to - from) * k / (points - 1);
+        placeMechanism(*scene, carrier.mobod, state, angle, speed);
+        iterations += solveInstant(*scene, state, tolerance);
+        // J_pr = 2 KE at unit carrier speed, every part moving as the
+        // elements say (charges with their drums or held in the carrier frame).
+        SimTK::State unit = state;
+        placeMechanism(*scene, carrier.mobod, unit, angle, 1.0);
+        scene->system().realize(unit, SimTK::Stage::Velocity);
+        std::vector<double> row = {angle, 2 * scene->system().calcKineticEnergy(unit)};
+        for (const auto& p : scene->probes()) row.push_back(p.value(state));
+        for (double v : row)
+            if (!std::isfinite(v))
+                throw AnalysisError("kinetostatic: a non-finite output at carrier angle " + std::to_string(angle) +
+                                    " rad");
+        result.rows.push_back(std::move(row));
+        if (progress) progress(k + 1, points);
+    }
+    result.statistics.realizations = iterations;
+
+    auto column = [&](const std::string& name) {
+        for (std::size_t i = 0; i < result.columnNames.size(); ++i)
+            if (result.columnNames[i] == name) return i;
+        return std::numeric_limits<std::size_t>::max();
+    };
+    result.results.push_back({"reduced_inertia", result.rows.front()[1], "kg*m^2",
+                              "J_pr = 2 KE / ω1² at the first angle"});
+    std::vector<std::size_t> torqueColumns, reactionColumns;
+    for (std::size_t i = 0; i < scene->probes().size(); ++i) {
+        const Probe& p = scene->probes()[i];
+        const std::size_t c = column(p.name);
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo, sum = 0, atMax = 0;
+        for (const auto& row : result.rows) {
+            if (row[c] > hi) { hi = row[c]; atMax = row[0]; }
+            lo = std::min(lo, row[c]);
+            sum += row[c];
+        }
+        if (p.role == ProbeRole::DriveTorque) {
+            torqueColumns.push_back(c);
+            result.results.push_back({p.name + ".first", result.rows.front()[c], p.unit, "at the first angle"});
+            result.results.push_back({p.name + ".max", hi, p.unit, "largest over the angles"});
+            result.results.push_back({p.name + ".min", lo, p.unit, "smallest over the angles"});
+            result.results.push_back({p.name + ".mean", sum / result.rows.size(), p.unit, "mean over the angles"});
+        } else if (p.unit == "N" && p.name.size() > 10 && p.name.substr(p.name.size() - 10) == "_magnitude") {
+            reactionColumns.push_back(c);
+            result.results.push_back({p.name + ".first", result.rows.front()[c], p.unit, "at the first angle"});
+            result.results.push_back({p.name + ".max", hi, p.unit, "largest over the angles"});
+            result.results.push_back({p.name + ".angle_of_max", atMax, "rad", "carrier angle of the largest"});
+        } else if (p.unit == "N*m") {
+            torqueColumns.push_back(c);
+            result.results.push_back({p.name + ".first", result.rows.front()[c], p.unit, "at the first angle"});
+        }
+    }
+    result.plots.push_back({"drive_torque", torqueColumns});
+    result.plots.push_back({"reactions", reactionColumns});
+    result.notes.push_back("carrier " + carrier.name + " at " + std::to_string(speed) + " rad/s, t = " +
+                           std::to_string(sc.number("time")) + " s of the drive law; " +
+                           std::to_string(points) + " angles, no time integration");
+    return result;
+}
+
+}  // namespace milldyn

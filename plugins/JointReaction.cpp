@@ -1,0 +1,48 @@
+// JointReaction: output-only element reporting the force a body's parent
+// exerts on it through its joint (a bearing reaction), from Simbody.
+
+#include "plugins/ElementRegistry.h"
+
+#include <cmath>
+
+namespace milldyn {
+
+namespace {
+
+/// Force of the parent on `body` at its joint axis (the mobilizer's M-frame
+/// origin), in ground axes [N]. Includes every constraint, motion and
+/// applied force (docs/simbody-notes.md); needs Stage::Acceleration.
+SimTK::Vec3 calcJointForceInGround(const SimTK::State& s, const SimTK::SimbodyMatterSubsystem& matter,
+                                   const SimTK::MobilizedBody& body) {
+    SimTK::Vector_<SimTK::SpatialVec> reactions;
+    matter.calcMobilizerReactionForces(s, reactions);
+    return reactions[body.getMobilizedBodyIndex()][1];
+}
+
+void buildJointReaction(const ElementSpec& spec, Scene& scene) {
+    const SceneBody* body = scene.findBody(spec.text("body"));
+    const SimTK::SimbodyMatterSubsystem* matter = &scene.matter();
+    const SimTK::MobilizedBody mobod = body->mobod;
+    auto force = [matter, mobod](const SimTK::State& s) { return calcJointForceInGround(s, *matter, mobod); };
+    const std::string stem = spec.name + ".on_" + body->name + "_at_axis";
+    scene.addProbe({stem + "_x_ground", "N", ProbeRole::Generic, SimTK::Stage::Acceleration,
+                    [force](const SimTK::State& s) { return force(s)[0]; }});
+    scene.addProbe({stem + "_y_ground", "N", ProbeRole::Generic, SimTK::Stage::Acceleration,
+                    [force](const SimTK::State& s) { return force(s)[1]; }});
+    scene.addProbe({stem + "_magnitude", "N", ProbeRole::Generic, SimTK::Stage::Acceleration,
+                    [force](const SimTK::State& s) { return force(s).norm(); }});
+    scene.note("output " + spec.name + " (JointReaction)",
+               "force of " + body->name + "'s parent on it at its joint axis, ground axes");
+}
+
+}  // namespace
+
+void registerJointReaction(ElementRegistry& registry) {
+    ElementSchema s;
+    s.type = "JointReaction";
+    s.doc = "Output only: the bearing reaction of a body's joint (force of the parent on the body, ground axes).";
+    s.params = {ParamSchema::body("body", "body whose joint reaction is reported")};
+    registry.add({std::move(s), buildJointReaction});
+}
+
+}  // namespace milldyn

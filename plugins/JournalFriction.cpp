@@ -1,0 +1,109 @@
+#include "plugins/JournalFriction.h"
+
+#include "plugins/ElementRegistry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace milldyn {
+
+using namespace SimTK;
+
+JournalFriction::JournalFriction(const SimbodyMatterSubsystem& matter, const MobilizedBody& body,
+                                 const JournalFrictionParams& p)
+    : m_matter(matter), m_body(body), m_p(p) {
+    auto bad = [](const std::string& what) { throw std::invalid_argument("JournalFriction: " + what); };
+    if (!(p.frictionCoefficient >= 0 && p.frictionCoefficient <= 1)) bad("friction_coefficient must be in [0, 1]");
+    if (!(p.journalDiameter >= 0) || !std::isfinite(p.journalDiameter)) bad("journal_diameter must be >= 0 m");
+    if (!(p.smoothingSpeed > 0) || !std::isfinite(p.smoothingSpeed)) bad("smoothing_speed must be > 0 rad/s");
+}
+
+void JournalFriction::realizeTopology(State& s) const {
+    m_keptLoad = m_matter.allocateAutoUpdateDiscreteVariable(s, Stage::Dynamics, new Value<Real>(0.0),
+                                                             Stage::Acceleration);
+}
+
+double JournalFriction::calcReaction(const State& s) const {
+    Vector_<SpatialVec> reactions;
+    m_matter.calcMobilizerReactionForces(s, reactions);
+    return reactions[m_body.getMobilizedBodyIndex()][1].norm();
+}
+
+double JournalFriction::getLoad(const State& s) const {
+    return Value<Real>::downcast(m_matter.getDiscreteVariable(s, m_keptLoad));
+}
+
+double JournalFriction::calcTorque(const State& s) const {
+    const double u = m_body.getOneU(s, MobilizerUIndex(0));
+    return getLoad(s) * m_p.frictionCoefficient * m_p.journalDiameter / 2 * std::tanh(u / m_p.smoothingSpeed);
+}
+
+double JournalFriction::calcPower(const State& s) const {
+    return calcTorque(s) * m_body.getOneU(s, MobilizerUIndex(0));
+}
+
+double JournalFriction::refreshKeptLoad(State& s) const {
+    m_matter.getSystem().realize(s, Stage::Acceleration);
+    const double now = calcReaction(s), kept = getLoad(s);
+    Value<Real>::updDowncast(m_matter.updDiscreteVariable(s, m_keptLoad)) = now;
+    return std::abs(now - kept) / std::max(now, 1e-300);
+}
+
+void JournalFriction::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&, Vector& mobilityForces) const {
+    m_body.applyOneMobilityForce(s, MobilizerUIndex(0), -calcTorque(s), mobilityForces);
+}
+
+void JournalFriction::realizeAcceleration(const State& s) const {
+    // Keep this step's reaction for the next (swapped in by the integrator
+    // when the step is accepted).
+    Value<Real>::updDowncast(m_matter.updDiscreteVarUpdateValue(s, m_keptLoad)) = calcReaction(s);
+    m_matter.markDiscreteVarUpdateValueRealized(s, m_keptLoad);
+}
+
+namespace {
+
+void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
+    const SceneBody* body = scene.findBody(spec.text("body"));
+    JournalFrictionParams p;
+    p.frictionCoefficient = spec.number("friction_coefficient");
+    p.journalDiameter = spec.number("journal_diameter");
+    p.smoothingSpeed = spec.number("smoothing_speed");
+    p.coupling = spec.text("reaction") == "iterated" ? ReactionCoupling::Iterated : ReactionCoupling::Lagged;
+    auto* impl = new JournalFriction(scene.matter(), body->mobod, p);
+    Force::Custom force(scene.forces(), impl);
+    scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
+    scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, Stage::Velocity,
+                    [impl](const State& s) { return std::abs(impl->calcTorque(s)); }});
+    scene.addProbe({spec.name + ".load", "N", ProbeRole::Generic, Stage::Velocity,
+                    [impl](const State& s) { return impl->getLoad(s); }});
+    scene.addProbe({spec.name + ".reaction", "N", ProbeRole::Generic, Stage::Acceleration,
+                    [impl](const State& s) { return impl->calcReaction(s); }});
+    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
+                         [impl](const State& s) { return impl->calcPower(s); }});
+    scene.addLaggedValue({spec.name + ".load", p.coupling == ReactionCoupling::Iterated,
+                          [impl](State& s) { return impl->refreshKeptLoad(s); }});
+    scene.note("force " + spec.name + " (JournalFriction, " + spec.text("reaction") + ")",
+               "journal of " + body->name + " on its parent, load from Simbody's reaction");
+}
+
+}  // namespace
+
+void registerJournalFriction(ElementRegistry& registry) {
+    using P = ParamSchema;
+    ElementSchema s;
+    s.type = "JournalFriction";
+    s.doc = "Journal-bearing friction M = |R| f d/2 from the reaction the model computes (seed 000 eq 21).";
+    s.params = {
+        P::body("body", "body whose pin (to its parent) is the journal"),
+        P::quantity("friction_coefficient", "1", "f").atLeast(0).atMost(1),
+        P::quantity("journal_diameter", "m", "d").atLeast(0),
+        P::quantity("smoothing_speed", "rad/s", "ω_s of tanh(u/ω_s) near zero relative speed").optional(1e-3).above(0),
+        P::choice("reaction", {"lagged", "iterated"}, "reaction of the last step (fast) or solved (accurate)")
+            .optional(std::string("lagged")),
+    };
+    registry.add({std::move(s), buildJournalFriction});
+}
+
+}  // namespace milldyn
