@@ -34,6 +34,8 @@ std::vector<ValidationRow> quickRows() {
     for (const char* c : {"roll_crusher_2mass_roots", "roll_crusher_10mass_modes", "roll_crusher_stagger",
                           "roll_crusher_resonance_map", "roll_crusher_approximation_sweep"})
         add(rollCrusherCases(c));
+    add(beadMillCases("bead_mill_static_5disc_0p1m"));
+    add(beadMillCases("bead_mill_eq2_fit"));  // with flagged rows
     return rows;
 }
 
@@ -46,7 +48,8 @@ TEST(ValidationReport, BothMachinesWithTable1PlotsAndFlaggedMisprints) {
     writeValidationReport(dir.string(), rows, reportSections(), warning);
     EXPECT_EQ(warning, "");
     for (const char* png : {"burr_mill_table1_Mc", "burr_mill_coastdown_5p5kW", "burr_mill_coastdown_3p2kW",
-                            "burr_mill_coastdown_error", "roll_crusher_resonance_map", "roll_crusher_mode_shapes"})
+                            "burr_mill_coastdown_error", "roll_crusher_resonance_map", "roll_crusher_mode_shapes",
+                            "bead_mill_deflection_line"})
         EXPECT_TRUE(fs::exists(dir / (std::string(png) + ".png"))) << png;
     // Not asked for: the response case was left out, so no response plot.
     EXPECT_FALSE(fs::exists(dir / "roll_crusher_response.png"));
@@ -59,6 +62,8 @@ TEST(ValidationReport, BothMachinesWithTable1PlotsAndFlaggedMisprints) {
     EXPECT_GT(counts.flagged, 0);
     EXPECT_NE(md.find("## MMP-50 burr mill (seed 003)"), std::string::npos);
     EXPECT_NE(md.find("## Single-roll crusher (seed 004)"), std::string::npos);
+    EXPECT_NE(md.find("## Horizontal bead mill rotor (seed 001)"), std::string::npos);
+    EXPECT_NE(md.find("| d(5 discs, 0.1 m, L\\_p 0.15 m) | 16.5 | 16.64 | 23.47 (flagged) |"), std::string::npos);
     EXPECT_EQ(md.find("Other cases"), std::string::npos) << "every row belongs to a machine";
     // Table 1 side by side: the misprinted row flagged, its corrected reading
     // beside it, the untouched row with paper, oracle and multibody.

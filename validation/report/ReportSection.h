@@ -73,6 +73,7 @@ std::vector<ReportSection> reportSections();
 /// The sections of each machine (one function per machine, next to its cases).
 ReportSection burrMillReportSection();
 ReportSection rollCrusherReportSection();
+ReportSection beadMillReportSection();
 
 /// Helpers for sections: the row of `caseName` whose quantity is exactly
 /// `quantity`, or null.

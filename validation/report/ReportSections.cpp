@@ -10,7 +10,7 @@
 namespace milldyn {
 
 std::vector<ReportSection> reportSections() {
-    return {burrMillReportSection(), rollCrusherReportSection()};
+    return {burrMillReportSection(), rollCrusherReportSection(), beadMillReportSection()};
 }
 
 const ValidationRow* findRow(const std::vector<ValidationRow>& rows, const std::string& caseName,
