@@ -82,7 +82,14 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
     ElementSchema statics;
     statics.type = "static_deflection";
     statics.doc = "Equilibrium at rest under the constant loads (gravity): every probe there and the "
-                  "deflection line of a FlexibleRotor (Newton on the accelerations).";
+                  "deflection line of a FlexibleRotor (Newton on the accelerations); with spin_speed, the "
+                  "steady state of a rotor turning at that speed (a synchronous whirl under unbalance).";
+    statics.params = {
+        P::quantity("spin_speed", "rad/s", "speed held on spin_body (0: at rest); loads must then turn with "
+                                           "the rotor (unbalance), not stand still (no gravity)")
+            .optional(0.0),
+        P::body("spin_body", "pin whose speed is held (default: the first body)").optional(""),
+    };
     schemas["static_deflection"] = statics;
 
     ElementSchema response;

@@ -19,6 +19,11 @@ AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn&) {
     auto scene = buildScene(spec);
     SimTK::State state = initialState(*scene, spec);
     state.updU() = 0;
+    // With a spin speed the coordinates of a FlexibleRotor turn with the
+    // shaft, so a synchronous whirl is an equilibrium in them.
+    const double spin = spec.scenario.number("spin_speed");
+    const SceneBody& spinBody = scenarioBody(*scene, spec.scenario, "spin_body");
+    if (spin != 0) spinBody.mobod.setOneU(state, SimTK::MobilizerUIndex(0), spin);
     scene->setExcitationsOn(state, false);
     const SimTK::System& system = scene->system();
     const int n = state.getNU();
@@ -105,7 +110,9 @@ AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn&) {
                               "coordinates"});
     result.results.push_back({"newton_iterations", double(iterations + 1), "1", "equilibrium iterations"});
     std::ostringstream note;
-    note << "static equilibrium at rest after " << iterations + 1 << " Newton step(s), last step " << step;
+    note << (spin != 0 ? "steady state at " + std::to_string(spin) + " rad/s of " + spinBody.name
+                       : std::string("static equilibrium at rest"))
+         << " after " << iterations + 1 << " Newton step(s), last step " << step;
     result.notes.push_back(note.str());
     return result;
 }

@@ -206,6 +206,52 @@ TEST(BeadMillCriticalSpeed, FiniteElementsConverge) {
     EXPECT_NEAR(beam.calcFiniteElementFrequencies(40, true, true).at(0), fine, fine * 1e-6);
 }
 
+TEST(BeadMillWhirl, SingleMassWithoutInertiaIsTheOneDegreeFormula) {
+    // Tip mass m with unbalance m·e on a massless overhang, no rotary inertia:
+    // y = Ω²·m·e/(k − m·Ω²), k = 3EI/(a²(l + a)); critical √(k/m).
+    const double Lp = 0.2, a = 0.25, m = 3, me = 3e-5, W = 150;
+    BeadMillShaft s = plainShaft(Lp, a);
+    s.discs = {{Lp + a, m, 0, 0, me}};
+    BeadMillBeam beam(s);
+    const double k = 3 * 2.1e11 * beam.getSecondMoment() / (a * a * (Lp + a));
+    const double y = W * W * me / (k - m * W * W);
+    EXPECT_NEAR(beam.calcSynchronousWhirl(Lp + a, W, 8), y, y * 1e-9);
+    EXPECT_NEAR(beam.calcForwardCriticalSpeed(8), std::sqrt(k / m), std::sqrt(k / m) * 1e-9);
+    EXPECT_NEAR(beam.calcSynchronousWhirl(Lp + a, 0, 8), 0, 1e-18);
+}
+
+TEST(BeadMillWhirl, ThinDiscGyroscopicMomentByHand) {
+    // A disc (m, I_d, I_p) at the tip of a massless overhang. Tip flexibility
+    // (Roark): w/P = a²(l + a)/(3EI), θ/P = w/M = a(2l + 3a)/(6EI),
+    // θ/M = (l + 3a)/(3EI). Forward synchronous whirl: the disc's moment is
+    // (I_p − I_d)Ω²θ against the tilt, so with K_t the inverse flexibility
+    //   det(K_t − Ω²·diag(m, I_d − I_p)) = 0     (critical),
+    //   (K_t − Ω²·diag(m, I_d − I_p))·[w, θ] = Ω²·[m·e, 0]   (whirl).
+    const double Lp = 0.2, a = 0.25, m = 3, Id = 0.01, Ip = 0.02, me = 3e-5;
+    BeadMillShaft s = plainShaft(Lp, a);
+    s.discs = {{Lp + a, m, Id, Ip, me}};
+    BeadMillBeam beam(s);
+    const double EI = 2.1e11 * beam.getSecondMoment();
+    const double fww = a * a * (Lp + a) / (3 * EI), fwt = a * (2 * Lp + 3 * a) / (6 * EI),
+                 ftt = (Lp + 3 * a) / (3 * EI);
+    const double det = fww * ftt - fwt * fwt;
+    const double kww = ftt / det, kwt = -fwt / det, ktt = fww / det;
+    const double J = Id - Ip;
+    // det = (kww − Ω²m)(ktt − Ω²J) − kwt² = 0: quadratic in x = Ω².
+    const double qa = m * J, qb = -(kww * J + ktt * m), qc = kww * ktt - kwt * kwt;
+    const double disc = std::sqrt(qb * qb - 4 * qa * qc);
+    double x1 = (-qb + disc) / (2 * qa), x2 = (-qb - disc) / (2 * qa);
+    const double critical = std::sqrt(std::max(x1, x2) > 0 && std::min(x1, x2) > 0 ? std::min(x1, x2)
+                                                                                   : std::max(x1, x2));
+    EXPECT_NEAR(beam.calcForwardCriticalSpeed(8), critical, critical * 1e-9);
+    // Stiffer than without the disc's rotation (J = 0: √(k/m)).
+    EXPECT_GT(critical, std::sqrt(3 * EI / (a * a * (Lp + a)) / m));
+    const double W = 0.6 * critical;
+    const double A = kww - W * W * m, B = kwt, C = ktt - W * W * J;
+    const double w = W * W * me * C / (A * C - B * B);
+    EXPECT_NEAR(beam.calcSynchronousWhirl(Lp + a, W, 8), w, std::abs(w) * 1e-9);
+}
+
 TEST(BeadMillBeam, RejectsBadShafts) {
     BeadMillShaft s = plainShaft(0.2, 0.1);
     s.diameter = 0;

@@ -25,7 +25,7 @@ TEST(BeadMillValidation, EveryMultibodyComparisonPasses) {
             EXPECT_EQ(r.status, "pass") << r.caseName << ": " << r.quantity << " " << *r.multibody << " vs "
                                         << r.oracle << " rel " << r.relError;
         }
-    EXPECT_EQ(compared, 4 + 4 + 6 + 4 + 12);  // static, critical speed, drag, convergence, span sweep
+    EXPECT_EQ(compared, 4 + 4 + 6 + 4 + 12 + 4);  // static, critical speed, drag, convergence, span, whirl
 }
 
 TEST(BeadMillValidation, AllCasesRan) {
@@ -35,6 +35,7 @@ TEST(BeadMillValidation, AllCasesRan) {
                          "bead_mill_static_5disc_0p1m", "bead_mill_static_8disc_0p3m",
                          "bead_mill_critical_speed_5disc_0p1m", "bead_mill_critical_speed_8disc_0p3m",
                          "bead_mill_drag_power_5disc_0p1m", "bead_mill_drag_power_8disc_0p3m",
+                         "bead_mill_unbalance_whirl_5disc_0p1m", "bead_mill_unbalance_whirl_8disc_0p3m",
                          "bead_mill_convergence", "bead_mill_span_sweep", "bead_mill_eq2_fit",
                          "bead_mill_paper_deflection"}));
 }

@@ -81,7 +81,9 @@ oc::BeadMillShaft oracleShaft(const ElementSpec& e) {
     s.overhang = e.number("overhang") > 0 ? e.number("overhang") : first + (k - 1) * pitch + pitch / 2;
     s.stiffnessA = s.stiffnessB = e.number("bearing_stiffness");
     const double m = e.number("disc_density") * M_PI * D * D / 4 * t;
-    for (int j = 0; j < k; ++j) s.discs.push_back({s.span + first + j * pitch, m, m * (3 * D * D / 4 + t * t) / 12});
+    for (int j = 0; j < k; ++j)
+        s.discs.push_back({s.span + first + j * pitch, m, m * (3 * D * D / 4 + t * t) / 12, m * D * D / 8,
+                           e.number("disc_unbalance")});
     return s;
 }
 
@@ -231,6 +233,36 @@ void spanSweepCase(std::vector<ValidationRow>& rows) {
         }
 }
 
+/// The synchronous whirl at running speed under disc unbalance (balance
+/// grade G6.3: e·Ω = 6.3 mm/s), gravity off: the spinning chain's steady
+/// state vs the beam's forward whirl with the discs' gyroscopic moments.
+void whirlCase(int which, std::vector<ValidationRow>& rows) {
+    const std::string name = std::string("bead_mill_unbalance_whirl_") + kTags[which];
+    ModelSpec spec = readRotor(which);
+    ElementSpec& e = rotorElement(spec);
+    const double w = runningSpeed(e), D = e.number("disc_diameter");
+    const double md = e.number("disc_density") * M_PI * D * D / 4 * e.number("disc_thickness");
+    e.params["disc_unbalance"].number = md * 6.3e-3 / w;
+    e.params["drag_law"].text = "none";
+    spec.gravity = {{0, 0, 0}};
+    spec.scenario = defaultScenario("static_deflection");
+    spec.scenario.params["spin_speed"].number = w;
+    const AnalysisResult r = runAnalysis(spec);
+    auto amplitude = [&](const std::string& where) {
+        return std::hypot(r.find(e.name + "." + where + "_deflection")->value,
+                          r.find(e.name + "." + where + "_lateral")->value);
+    };
+    const oc::BeadMillBeam beam(oracleShaft(e));
+    const double forward = beam.calcForwardCriticalSpeed(kOracleElements);
+    const std::string note = "G6.3, e = " + fmt(6.3e-3 / w * 1e6) + " um; forward critical " + fmt(forward) +
+                             " rad/s, at rest " + fmt(beam.calcFiniteElementFrequencies(kOracleElements, true, true).at(0));
+    rows.push_back(compareRow(name, "seal whirl amplitude at running speed", "m", amplitude("seal"),
+                              beam.calcSynchronousWhirl(beam.shaft().span + e.number("seal_offset"), w, kOracleElements),
+                              kChainTolerance, note));
+    rows.push_back(compareRow(name, "overhang end whirl amplitude at running speed", "m", amplitude("end"),
+                              beam.calcSynchronousWhirl(beam.getLength(), w, kOracleElements), kChainTolerance, note));
+}
+
 void dragCase(int which, std::vector<ValidationRow>& rows) {
     const std::string name = std::string("bead_mill_drag_power_") + kTags[which];
     for (const char* law : {"laminar", "turbulent"}) {
@@ -331,6 +363,7 @@ std::vector<ValidationRow> beadMillCases(const std::string& filter) {
         if (wanted(std::string("bead_mill_static_") + kTags[which])) staticCase(which, rows);
         if (wanted(std::string("bead_mill_critical_speed_") + kTags[which])) criticalCase(which, rows);
         if (wanted(std::string("bead_mill_drag_power_") + kTags[which])) dragCase(which, rows);
+        if (wanted(std::string("bead_mill_unbalance_whirl_") + kTags[which])) whirlCase(which, rows);
     }
     if (wanted("bead_mill_convergence")) convergenceCase(rows);
     if (wanted("bead_mill_span_sweep")) spanSweepCase(rows);

@@ -102,6 +102,8 @@ BeadMillBeam::BeadMillBeam(BeadMillShaft s) : m_shaft(std::move(s)) {
         require(d.position >= 0 && d.position <= getLength() + 1e-12, "disc position must lie on the shaft");
         require(std::isfinite(d.mass) && d.mass >= 0, "disc mass must be >= 0");
         require(std::isfinite(d.diametralInertia) && d.diametralInertia >= 0, "disc inertia must be >= 0");
+        require(std::isfinite(d.polarInertia) && d.polarInertia >= 0, "disc polar inertia must be >= 0");
+        require(std::isfinite(d.unbalance) && d.unbalance >= 0, "disc unbalance must be >= 0");
     }
 }
 
@@ -277,42 +279,61 @@ void assemble(const std::vector<double>& nodes, double EI, double mu, double rho
         M.block<4, 4>(o, o) += mu * h / 420 * m + rhoI / (30 * h) * r;
     }
 }
-}  // namespace
+int nearestNode(const std::vector<double>& nodes, double x) {
+    int best = 0;
+    for (int i = 1; i < int(nodes.size()); ++i)
+        if (std::abs(nodes[i] - x) < std::abs(nodes[best] - x)) best = i;
+    return best;
+}
 
-std::vector<double> BeadMillBeam::calcFiniteElementFrequencies(int elements, bool discInertia,
-                                                               bool shaftRotaryInertia, int count) const {
-    const Mesh mesh = buildMesh(elements);
-    const double EI = m_shaft.youngsModulus * getSecondMoment();
-    const double rhoI = shaftRotaryInertia ? m_shaft.density * getSecondMoment() : 0;
+// K and M of the mesh with the rigid supports eliminated and the bearing
+// springs added; the shaft's rotary coefficient `rhoI` per length [kg*m] and
+// `discRotary(d)` on each disc's rotation dof [kg*m^2] (negative values are
+// allowed: the synchronous whirl's I_d − I_p).
+struct Reduced {
     Eigen::MatrixXd K, M;
-    assemble(mesh.nodes, EI, getMassPerLength(), rhoI, K, M);
-    for (const auto& d : m_shaft.discs) {
-        const int i = mesh.nodeOf(d.position);
+    std::vector<int> keep;  // full dof of each reduced dof
+    int fullSize = 0;
+};
+template <class DiscRotary>
+Reduced reduce(const BeadMillShaft& sh, const std::vector<double>& nodes, double EI, double mu, double rhoI,
+               DiscRotary discRotary) {
+    Eigen::MatrixXd K, M;
+    assemble(nodes, EI, mu, rhoI, K, M);
+    for (const auto& d : sh.discs) {
+        const int i = nearestNode(nodes, d.position);
         M(2 * i, 2 * i) += d.mass;
-        if (discInertia) M(2 * i + 1, 2 * i + 1) += d.diametralInertia;
+        M(2 * i + 1, 2 * i + 1) += discRotary(d);
     }
-    std::vector<int> keep;
-    const int iA = mesh.nodeOf(0), iB = mesh.nodeOf(m_shaft.span);
+    Reduced r;
+    r.fullSize = int(K.rows());
+    const int iA = nearestNode(nodes, 0), iB = nearestNode(nodes, sh.span);
     for (int dof = 0; dof < K.rows(); ++dof) {
-        if (dof == 2 * iA && !std::isfinite(m_shaft.stiffnessA)) continue;
-        if (dof == 2 * iB && !std::isfinite(m_shaft.stiffnessB)) continue;
-        keep.push_back(dof);
+        if (dof == 2 * iA && !std::isfinite(sh.stiffnessA)) continue;
+        if (dof == 2 * iB && !std::isfinite(sh.stiffnessB)) continue;
+        r.keep.push_back(dof);
     }
-    if (std::isfinite(m_shaft.stiffnessA)) K(2 * iA, 2 * iA) += m_shaft.stiffnessA;
-    if (std::isfinite(m_shaft.stiffnessB)) K(2 * iB, 2 * iB) += m_shaft.stiffnessB;
-    const int n = int(keep.size());
-    Eigen::MatrixXd Kr(n, n), Mr(n, n);
+    if (std::isfinite(sh.stiffnessA)) K(2 * iA, 2 * iA) += sh.stiffnessA;
+    if (std::isfinite(sh.stiffnessB)) K(2 * iB, 2 * iB) += sh.stiffnessB;
+    const int n = int(r.keep.size());
+    r.K.resize(n, n);
+    r.M.resize(n, n);
     for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j) {
-            Kr(i, j) = K(keep[i], keep[j]);
-            Mr(i, j) = M(keep[i], keep[j]);
+            r.K(i, j) = K(r.keep[i], r.keep[j]);
+            r.M(i, j) = M(r.keep[i], r.keep[j]);
         }
-    // K = L·Lᵀ; the eigenvalues μ = 1/ω² of L⁻¹·M·L⁻ᵀ allow a singular M
-    // (massless shaft with point masses).
-    Eigen::LLT<Eigen::MatrixXd> llt(Kr);
+    return r;
+}
+
+// The largest `count` eigenvalues μ = 1/ω² of K⁻¹M as ω ascending; K = L·Lᵀ
+// and L⁻¹·M·L⁻ᵀ is symmetric, so M may be singular or indefinite.
+std::vector<double> lowestOmegas(const Reduced& r, int count) {
+    const int n = int(r.keep.size());
+    Eigen::LLT<Eigen::MatrixXd> llt(r.K);
     require(llt.info() == Eigen::Success, "finite elements: stiffness not positive definite");
     const Eigen::MatrixXd Linv = llt.matrixL().solve(Eigen::MatrixXd::Identity(n, n));
-    const Eigen::MatrixXd C = Linv * Mr * Linv.transpose();
+    const Eigen::MatrixXd C = Linv * r.M * Linv.transpose();
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(0.5 * (C + C.transpose()), Eigen::EigenvaluesOnly);
     std::vector<double> omegas;
     for (int i = n - 1; i >= 0 && int(omegas.size()) < count; --i) {
@@ -321,6 +342,57 @@ std::vector<double> BeadMillBeam::calcFiniteElementFrequencies(int elements, boo
         omegas.push_back(1 / std::sqrt(mu));
     }
     return omegas;
+}
+
+// Hermite interpolation of a full nodal vector (w, θ per node) at x.
+double interpolate(const std::vector<double>& nodes, const Eigen::VectorXd& u, double x) {
+    std::size_t e = 0;
+    while (e + 2 < nodes.size() && x > nodes[e + 1]) ++e;
+    const double h = nodes[e + 1] - nodes[e], t = (x - nodes[e]) / h;
+    const double N1 = 1 - 3 * t * t + 2 * t * t * t, N2 = h * (t - 2 * t * t + t * t * t);
+    const double N3 = 3 * t * t - 2 * t * t * t, N4 = h * (t * t * t - t * t);
+    return N1 * u(2 * e) + N2 * u(2 * e + 1) + N3 * u(2 * e + 2) + N4 * u(2 * e + 3);
+}
+
+}  // namespace
+
+std::vector<double> BeadMillBeam::calcFiniteElementFrequencies(int elements, bool discInertia,
+                                                               bool shaftRotaryInertia, int count) const {
+    const Mesh mesh = buildMesh(elements);
+    const double rhoI = shaftRotaryInertia ? m_shaft.density * getSecondMoment() : 0;
+    const Reduced r = reduce(m_shaft, mesh.nodes, m_shaft.youngsModulus * getSecondMoment(), getMassPerLength(), rhoI,
+                             [&](const BeadMillDisc& d) { return discInertia ? d.diametralInertia : 0.0; });
+    return lowestOmegas(r, count);
+}
+
+double BeadMillBeam::calcForwardCriticalSpeed(int elements) const {
+    const Mesh mesh = buildMesh(elements);
+    // Forward synchronous whirl: rotary terms I_d − I_p (discs) and
+    // ρI − 2ρI = −ρI (shaft) per unit Ω².
+    const Reduced r = reduce(m_shaft, mesh.nodes, m_shaft.youngsModulus * getSecondMoment(), getMassPerLength(),
+                             -m_shaft.density * getSecondMoment(),
+                             [](const BeadMillDisc& d) { return d.diametralInertia - d.polarInertia; });
+    const auto omegas = lowestOmegas(r, 1);
+    require(!omegas.empty(), "forward critical speed: none");
+    return omegas.front();
+}
+
+double BeadMillBeam::calcSynchronousWhirl(double x, double omega, int elements) const {
+    require(x >= 0 && x <= getLength() + 1e-12, "whirl point x must lie on the shaft");
+    require(std::isfinite(omega) && omega >= 0, "omega must be finite and >= 0");
+    const Mesh mesh = buildMesh(elements);
+    const Reduced r = reduce(m_shaft, mesh.nodes, m_shaft.youngsModulus * getSecondMoment(), getMassPerLength(),
+                             -m_shaft.density * getSecondMoment(),
+                             [](const BeadMillDisc& d) { return d.diametralInertia - d.polarInertia; });
+    Eigen::VectorXd fFull = Eigen::VectorXd::Zero(r.fullSize);
+    for (const auto& d : m_shaft.discs) fFull(2 * mesh.nodeOf(d.position)) += d.unbalance * omega * omega;
+    const int n = int(r.keep.size());
+    Eigen::VectorXd f(n);
+    for (int i = 0; i < n; ++i) f(i) = fFull(r.keep[i]);
+    const Eigen::VectorXd y = (r.K - omega * omega * r.M).fullPivLu().solve(f);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(r.fullSize);
+    for (int i = 0; i < n; ++i) u(r.keep[i]) = y(i);
+    return interpolate(mesh.nodes, u, x);
 }
 
 double BeadMillBeam::calcFiniteElementGravityDeflection(double x, double g, int elements) const {
@@ -341,12 +413,7 @@ double BeadMillBeam::calcFiniteElementGravityDeflection(double x, double g, int 
     K(2 * iA, 2 * iA) += std::isfinite(m_shaft.stiffnessA) ? m_shaft.stiffnessA : rigid;
     K(2 * iB, 2 * iB) += std::isfinite(m_shaft.stiffnessB) ? m_shaft.stiffnessB : rigid;
     const Eigen::VectorXd u = K.ldlt().solve(f);
-    std::size_t e = 0;
-    while (e + 2 < mesh.nodes.size() && x > mesh.nodes[e + 1]) ++e;
-    const double h = mesh.nodes[e + 1] - mesh.nodes[e], t = (x - mesh.nodes[e]) / h;
-    const double N1 = 1 - 3 * t * t + 2 * t * t * t, N2 = h * (t - 2 * t * t + t * t * t);
-    const double N3 = 3 * t * t - 2 * t * t * t, N4 = h * (t * t * t - t * t);
-    return N1 * u(2 * e) + N2 * u(2 * e + 1) + N3 * u(2 * e + 2) + N4 * u(2 * e + 3);
+    return interpolate(mesh.nodes, u, x);
 }
 
 // -------------------------------------------------------- eq (2), Table 1

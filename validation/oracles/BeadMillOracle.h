@@ -40,6 +40,8 @@ struct BeadMillDisc {
     double position = 0;         ///< from the rear bearing A along the shaft [m]
     double mass = 0;             ///< [kg] >= 0
     double diametralInertia = 0; ///< about a diameter through its centre [kg*m^2] >= 0
+    double polarInertia = 0;     ///< about the shaft axis [kg*m^2] >= 0 (whirl only)
+    double unbalance = 0;        ///< m·e, all discs in phase [kg*m] >= 0 (whirl only)
 };
 
 /// Uniform solid shaft on two radial supports: rear bearing A at x = 0,
@@ -106,6 +108,17 @@ public:
     /// the lowest `count` natural frequencies [rad/s], ascending.
     std::vector<double> calcFiniteElementFrequencies(int elements, bool discInertia, bool shaftRotaryInertia,
                                                      int count = 1) const;
+    /// Forward synchronous critical speed [rad/s]: the lowest Ω with
+    /// det(K − Ω²·M_Ω) = 0, where M_Ω has the translational mass and, per
+    /// unit Ω², the gyroscopic-plus-centrifugal rotary terms of a forward
+    /// synchronous whirl: I_d − I_p on each disc, ρI − 2ρI = −ρI per length
+    /// of shaft (the thin disc's I_p ≈ 2·I_d stiffens the whirl).
+    double calcForwardCriticalSpeed(int elements) const;
+    /// Amplitude of the forward synchronous whirl at x [m] at speed Ω
+    /// [rad/s] under the discs' unbalances (in phase): in the frame turning
+    /// with the shaft a static problem, (K − Ω²·M_Ω)·y = Ω²·f, f the m·e at
+    /// the discs. Undamped; infinite at the forward critical speed.
+    double calcSynchronousWhirl(double x, double omega, int elements) const;
     /// Static deflection at x by the same finite elements under gravity
     /// (an independent check of calcGravityDeflection) [m].
     double calcFiniteElementGravityDeflection(double x, double g, int elements) const;
