@@ -11,6 +11,7 @@ void registerSegmentCharge(ElementRegistry& registry);
 void registerCarrierDrive(ElementRegistry& registry);
 void registerJournalFriction(ElementRegistry& registry);
 void registerJointReaction(ElementRegistry& registry);
+void registerBeltDrive(ElementRegistry& registry);
 void registerDiscDrag(ElementRegistry& registry);
 void registerFlexibleRotor(ElementRegistry& registry);
 
@@ -24,6 +25,7 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerCarrierDrive(registry);
     registerJournalFriction(registry);
     registerJointReaction(registry);
+    registerBeltDrive(registry);
     registerDiscDrag(registry);
     registerFlexibleRotor(registry);
 }

@@ -212,6 +212,13 @@ AnalysisResult runModelFile(const std::string& path, const std::vector<Override>
 }
 
 AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
+    // A charge held at its lag is a condition of one instant (its wall
+    // torque is solved per configuration), not a law a time step can use.
+    if (spec.scenario.type != "kinetostatic")
+        for (const auto& e : spec.elements)
+            if (e.type == "SegmentCharge" && e.text("motion") == "held")
+                throw e.error("motion", "a held charge is a kinetostatic model; analysis '" + spec.scenario.type +
+                                            "' needs motion: with_drum or dynamic_lag");
     if (spec.scenario.type == "transient") return runTransient(spec, progress);
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
     if (spec.scenario.type == "linearize") return runLinearize(spec, progress);

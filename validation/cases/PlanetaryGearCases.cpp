@@ -19,6 +19,7 @@
 #include "validation/oracles/PlanetaryGearOracle.h"
 
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace milldyn {
@@ -72,11 +73,7 @@ double steadyRate(const Size& size) {
 constexpr double kAccelerationTime = 4.6;  // [s], the paper's (24)
 
 /// Exact, for overrides.
-std::string fmt(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+std::string fmt(double v) { return formatExact(v); }
 
 /// Short, for labels.
 std::string label(double v) {
@@ -136,6 +133,35 @@ bool wanted(const std::string& name, const std::string& filter) {
     return filter.empty() || name.find(filter) != std::string::npos;
 }
 
+/// Friction torque at B2 from the model's own reactions vs (21) from the
+/// frictionless reactions (the paper's first-order method) at f = 0.01,
+/// flagged; and the check that they differ at first order in f (the
+/// difference falls tenfold with f). Returns the model's f = 0.01 table.
+AnalysisResult frictionRows(std::vector<ValidationRow>& rows, const std::string& name, const Size& size,
+                            const std::vector<Override>& base,
+                            const std::function<oc::PlanetaryGearLoads(double)>& oracleLoads) {
+    auto model = [&](double f) {
+        std::vector<Override> o = base;
+        for (const char* j : {"friction_A", "friction_B1", "friction_B2"})
+            o.push_back({std::string("elements.") + j + ".friction_coefficient", fmt(f)});
+        return runKinetostatic(size, o);
+    };
+    const AnalysisResult r1 = model(0.01), r2 = model(0.001);
+    const double m1 = at(r1, 0, "friction_B2.torque"), m2 = at(r2, 0, "friction_B2.torque");
+    const double o1 = oracleLoads(0.01).drums[1].bearingFrictionTorque;
+    const double o2 = oracleLoads(0.001).drums[1].bearingFrictionTorque;
+    ValidationRow row = compareRow(name, "friction torque at B2, f = 0.01", "N*m", m1, o1, 0.0,
+                                   "oracle: frictionless reactions (the paper's first-order method); model: "
+                                   "reactions including friction");
+    row.status = "flagged";
+    rows.push_back(row);
+    rows.push_back(compareRow(name, "first-order difference: d(f=0.01)/d(f=0.001)", "1",
+                              ((m1 - o1) / o1) / ((m2 - o2) / o2), 10.0, 0.02,
+                              "the paper's method neglects O(f) of the friction torque; the ratio is 10 up to "
+                              "O(f) = 1 %"));
+    return r1;
+}
+
 void startUpCases(const Size& size, const std::string& filter, std::vector<ValidationRow>& rows) {
     const oc::PlanetaryGearOracle oracle(oracleParameters(size, 0));
     const double eps0 = oracle.calcInitialAcceleration(steadyRate(size), kAccelerationTime);
@@ -181,29 +207,13 @@ void startUpCases(const Size& size, const std::string& filter, std::vector<Valid
         // to 1e-12. So they differ at first order in f. That is checked:
         // the difference must fall tenfold when f does.
         const double w = 0.5;
-        auto frictionTorqueAtB2 = [&](double f, double& oracleValue) {
-            const oc::PlanetaryGearOracle withF(oracleParameters(size, f));
-            oc::PlanetaryGearMotionState st = oc::PlanetaryGearOracle::makeStartUpState(eps0);
-            st.carrierRate = w;
-            oracleValue = withF.calcLoads(st, oc::ChargeMotion::kRotatesWithDrum).drums[1].bearingFrictionTorque;
-            std::vector<Override> o = {{"scenario.carrier_speed", fmt(w) + " rad/s"}};
-            for (const char* j : {"friction_A", "friction_B1", "friction_B2"})
-                o.push_back({std::string("elements.") + j + ".friction_coefficient", fmt(f)});
-            const AnalysisResult r = runKinetostatic(size, o);
-            return std::make_pair(at(r, 0, "friction_B2.torque"), r);
-        };
-        double oracle1 = 0, oracle2 = 0;
-        const auto [model1, r1] = frictionTorqueAtB2(0.01, oracle1);
-        const auto [model2, r2] = frictionTorqueAtB2(0.001, oracle2);
-        ValidationRow row = compareRow(nFriction, "friction torque at B2, f = 0.01", "N*m", model1, oracle1, 0.0,
-                                       "oracle: frictionless reactions (the paper's first-order method); model: "
-                                       "reactions including friction");
-        row.status = "flagged";
-        rows.push_back(row);
-        const double d1 = (model1 - oracle1) / oracle1, d2 = (model2 - oracle2) / oracle2;
-        rows.push_back(compareRow(nFriction, "first-order difference: d(f=0.01)/d(f=0.001)", "1", d1 / d2, 10.0, 0.02,
-                                  "the paper's method neglects O(f) of the friction torque; the ratio is 10 up "
-                                  "to O(f) = 1 %"));
+        const AnalysisResult r1 = frictionRows(
+            rows, nFriction, size, {{"scenario.carrier_speed", fmt(w) + " rad/s"}}, [&](double f) {
+                oc::PlanetaryGearMotionState st = oc::PlanetaryGearOracle::makeStartUpState(eps0);
+                st.carrierRate = w;
+                return oc::PlanetaryGearOracle(oracleParameters(size, f))
+                    .calcLoads(st, oc::ChargeMotion::kRotatesWithDrum);
+            });
         const oc::PlanetaryGearOracle withF(oracleParameters(size, 0.01));
         oc::PlanetaryGearMotionState st = oc::PlanetaryGearOracle::makeStartUpState(eps0);
         st.carrierRate = w;
@@ -282,6 +292,18 @@ void steadyCases(const Size& size, const std::string& filter, std::vector<Valida
                                   kKinetostaticTolerance, note));
         rows.back().relError = worstJ;
         rows.back().status = worstJ <= kKinetostaticTolerance ? "pass" : "fail";
+        if (v.tag == "held_lag90") {
+            // Steady friction (the paper's whole steady torque at α = 90°),
+            // judged like the start's.
+            std::vector<Override> f = o;
+            for (auto& x : f)
+                if (x.path == "scenarios.turn.angle_points") x.value = "1";
+            frictionRows(rows, name, size, f, [&](double fc) {
+                oc::PlanetaryGearParameters q = oracleParameters(size, fc);
+                q.lagAngle = v.lag;
+                return oc::PlanetaryGearOracle(q).calcSteadyStateLoads(w, 0.0, v.motion);
+            });
+        }
         if (v.motion == oc::ChargeMotion::kHeldInCarrierFrame) {
             // The charge-holding ("lifting") torque the paper's "only friction
             // in steady state" leaves out: M = 2 T_wall R/r, frictionless.

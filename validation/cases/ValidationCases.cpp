@@ -1,5 +1,7 @@
 #include "validation/cases/ValidationCases.h"
 
+#include <cstdio>
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -24,10 +26,16 @@ ValidationRow compareRow(std::string caseName, std::string quantity, std::string
     return r;
 }
 
+std::string formatExact(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
 std::vector<ValidationRow> runValidationCases(const std::string& filter) {
     std::vector<ValidationRow> all;
     for (const CaseGroup& group : {CaseGroup(burrMillCases), CaseGroup(rollCrusherCases), CaseGroup(planetaryGearCases),
-                                   CaseGroup(beadMillCases)}) {
+                                     CaseGroup(planetaryBeltCases), CaseGroup(beadMillCases)}) {
         auto rows = group(filter);
         all.insert(all.end(), rows.begin(), rows.end());
     }

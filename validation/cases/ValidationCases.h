@@ -38,12 +38,17 @@ std::string formatValidationJson(const std::vector<ValidationRow>& rows);
 /// A table for people.
 std::string formatValidationTable(const std::vector<ValidationRow>& rows);
 
+/// `v` with every digit a double holds (%.17g), for --set overrides that
+/// must reach the model exactly.
+std::string formatExact(double v);
+
 /// Where the shipped model files are: $MILLDYN_MODELS, else the source tree's models/.
 std::string modelsDirectory();
 
 std::vector<ValidationRow> burrMillCases(const std::string& filter);
 std::vector<ValidationRow> rollCrusherCases(const std::string& filter);
 std::vector<ValidationRow> planetaryGearCases(const std::string& filter);
+std::vector<ValidationRow> planetaryBeltCases(const std::string& filter);
 std::vector<ValidationRow> beadMillCases(const std::string& filter);
 
 }  // namespace milldyn
