@@ -217,4 +217,9 @@ double pinSpeed(const SimTK::State& state, const SimTK::MobilizedBody& body);
 /// The angle of a pin-jointed body about its axis [rad].
 double pinAngle(const SimTK::State& state, const SimTK::MobilizedBody& body);
 
+/// A name for every generalized speed u of the scene, in u order: the body's
+/// name for a one-mobility body (a pin), "body.u<i>" for body mobilities
+/// beyond one (gimbal, bushing). `state` must be realized to Model.
+std::vector<std::string> mobilityNames(const Scene& scene, const SimTK::State& state);
+
 }  // namespace milldyn

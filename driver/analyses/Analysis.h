@@ -94,6 +94,7 @@ AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress
                                const SampleObserver& observer = {});
 AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn& progress);
 
 /// Sum of every probe with this role in this state.
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);

@@ -42,6 +42,8 @@ std::vector<ValidationRow> quickRows() {
     for (const char* c : {"planetary_belt_fig3_printed", "planetary_belt_c_to_1", "planetary_belt_map_omega",
                           "planetary_belt_map_c"})
         add(planetaryBeltCases(c));
+    add(beadMillCases("bead_mill_static_5disc_0p1m"));
+    add(beadMillCases("bead_mill_eq2_fit"));  // with flagged rows
     return rows;
 }
 
@@ -54,7 +56,8 @@ TEST(ValidationReport, BothMachinesWithTable1PlotsAndFlaggedMisprints) {
     writeValidationReport(dir.string(), rows, reportSections(), warning);
     EXPECT_EQ(warning, "");
     for (const char* png : {"burr_mill_table1_Mc", "burr_mill_coastdown_5p5kW", "burr_mill_coastdown_3p2kW",
-                            "burr_mill_coastdown_error", "roll_crusher_resonance_map", "roll_crusher_mode_shapes"})
+                            "burr_mill_coastdown_error", "roll_crusher_resonance_map", "roll_crusher_mode_shapes",
+                            "bead_mill_deflection_line"})
         EXPECT_TRUE(fs::exists(dir / (std::string(png) + ".png"))) << png;
     for (const char* png : {"planetary_gear_fig10_a", "planetary_gear_holding_torque", "planetary_belt_reaction",
                             "planetary_belt_reaction_polar", "planetary_belt_tensions", "planetary_belt_map_omega",
@@ -75,6 +78,8 @@ TEST(ValidationReport, BothMachinesWithTable1PlotsAndFlaggedMisprints) {
     EXPECT_NE(md.find("## Single-roll crusher (seed 004)"), std::string::npos);
     EXPECT_NE(md.find("## Horizontal planetary mill, external rolling (seed 000)"), std::string::npos);
     EXPECT_NE(md.find("## Planetary mill with belt drive (seed 002)"), std::string::npos);
+    EXPECT_NE(md.find("## Horizontal bead mill rotor (seed 001)"), std::string::npos);
+    EXPECT_NE(md.find("| d(5 discs, 0.1 m, L\\_p 0.15 m) | 16.5 | 16.64 | 23.47 (flagged) |"), std::string::npos);
     EXPECT_EQ(md.find("Other cases"), std::string::npos) << "every row belongs to a machine";
     // Fig. 10 (a) side by side: at t_p = 0.3 s the ratio 1/(1 − e^(−0.3)) =
     // 3.858 of both sizes, beside the paper's "≈ 4× at 0.3–0.4 s".

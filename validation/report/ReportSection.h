@@ -77,6 +77,7 @@ ReportSection burrMillReportSection();
 ReportSection rollCrusherReportSection();
 ReportSection planetaryGearReportSection();
 ReportSection planetaryBeltReportSection();
+ReportSection beadMillReportSection();
 
 /// Helpers for sections: the row of `caseName` whose quantity is exactly
 /// `quantity`, or null.
