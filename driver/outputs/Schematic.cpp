@@ -2,6 +2,7 @@
 
 #include "driver/Units.h"
 #include "driver/outputs/AtomicFile.h"
+#include "driver/outputs/Writers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,19 +40,6 @@ namespace {
 constexpr double kDrawingPixels = 640;  // the larger side of the machine [px]
 constexpr double kMargin = 60, kTitleHeight = 56, kLegendWidth = 300;
 
-std::string escapeXml(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string num(double v) {
     char buf[32];
@@ -187,15 +175,15 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
            "fill=\"#d62728\"/></marker></defs>\n"
         << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
         << "<text x=\"" << num(kMargin / 2) << "\" y=\"24\" font-size=\"16\" font-weight=\"bold\">"
-        << escapeXml(title) << "</text>\n"
-        << "<text x=\"" << num(kMargin / 2) << "\" y=\"46\" font-size=\"13\">" << escapeXml(caption) << "</text>\n";
+        << escapeMarkup(title) << "</text>\n"
+        << "<text x=\"" << num(kMargin / 2) << "\" y=\"46\" font-size=\"13\">" << escapeMarkup(caption) << "</text>\n";
 
     // Fills first, lines over them, arrows on top.
     auto pass = [&](Sketch::Kind kind) {
         for (const auto& s : shapes) {
             if (s.kind != kind) continue;
             const Style& st = styleOf(s.role);
-            const std::string cls = escapeXml(s.role);
+            const std::string cls = escapeMarkup(s.role);
             switch (s.kind) {
                 case Sketch::Kind::Circle:
                     svg << "<circle class=\"" << cls << "\" cx=\"" << num(X(s.x)) << "\" cy=\"" << num(Y(s.y))
@@ -203,7 +191,7 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
                     if (!s.label.empty())
                         svg << "<text class=\"label\" x=\"" << num(X(s.x + 0.75 * s.radius)) << "\" y=\""
                             << num(Y(s.y + 0.75 * s.radius) - 4) << "\" font-size=\"11\" fill=\"#333\">"
-                            << escapeXml(s.label) << "</text>\n";
+                            << escapeMarkup(s.label) << "</text>\n";
                     break;
                 case Sketch::Kind::Segment: {
                     // Chord ends at direction ± γ; the arc runs through the
@@ -219,7 +207,7 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
                         const double lx = s.x + 0.45 * s.radius * std::cos(s.direction);
                         const double ly = s.y + 0.45 * s.radius * std::sin(s.direction);
                         svg << "<text class=\"label\" x=\"" << num(X(lx)) << "\" y=\"" << num(Y(ly))
-                            << "\" font-size=\"10\" text-anchor=\"middle\" fill=\"#402000\">" << escapeXml(s.label)
+                            << "\" font-size=\"10\" text-anchor=\"middle\" fill=\"#402000\">" << escapeMarkup(s.label)
                             << "</text>\n";
                     }
                     break;
@@ -231,21 +219,21 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
                     if (!s.label.empty())
                         svg << "<text class=\"label\" x=\"" << num(X(0.5 * (s.x + s.x2)) + 4) << "\" y=\""
                             << num(Y(0.5 * (s.y + s.y2)) - 4) << "\" font-size=\"11\" fill=\"#1f5fbf\">"
-                            << escapeXml(s.label) << "</text>\n";
+                            << escapeMarkup(s.label) << "</text>\n";
                     break;
                 case Sketch::Kind::Arrow: {
                     const double f = std::hypot(s.x2, s.y2);
                     const double ex = s.x + s.x2 * metresPerNewton, ey = s.y + s.y2 * metresPerNewton;
                     svg << "<g class=\"arrow " << cls << "\" data-force=\"" << f << "\" data-name=\""
-                        << escapeXml(s.label) << "\">"
+                        << escapeMarkup(s.label) << "\">"
                         << "<line class=\"arrow\" x1=\"" << X(s.x) << "\" y1=\"" << Y(s.y) << "\" x2=\"" << X(ex)
                         << "\" y2=\"" << Y(ey) << "\" stroke=\"#d62728\" stroke-width=\"3\" "
                         << "marker-end=\"url(#head)\"/>"
                         << "<circle cx=\"" << num(X(s.x)) << "\" cy=\"" << num(Y(s.y))
                         << "\" r=\"3\" fill=\"#d62728\"/>"
                         << "<text x=\"" << num(X(ex) + 6) << "\" y=\"" << num(Y(ey) + 4)
-                        << "\" font-size=\"11\" fill=\"#a01010\">" << escapeXml(s.label) << ' '
-                        << escapeXml(shortNumber(f / 1000)) << " kN</text></g>\n";
+                        << "\" font-size=\"11\" fill=\"#a01010\">" << escapeMarkup(s.label) << ' '
+                        << escapeMarkup(shortNumber(f / 1000)) << " kN</text></g>\n";
                     break;
                 }
             }
@@ -276,7 +264,7 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
             svg << "<rect x=\"" << num(lx) << "\" y=\"" << num(ly - 12) << "\" width=\"28\" height=\"14\" "
                 << st.attributes << "/>";
         svg << "<text x=\"" << num(lx + 36) << "\" y=\"" << num(ly) << "\" font-size=\"12\">"
-            << escapeXml(st.legend[0] ? st.legend : role) << "</text>\n";
+            << escapeMarkup(st.legend[0] ? st.legend : role) << "</text>\n";
     }
     if (metresPerNewton > 0 && referenceForce > 0) {
         ly += 34;
@@ -285,7 +273,7 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
             << lx << "\" y1=\"" << num(ly) << "\" x2=\"" << lx + len << "\" y2=\"" << num(ly)
             << "\" stroke=\"#d62728\" stroke-width=\"3\" marker-end=\"url(#head)\"/>"
             << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 18) << "\" font-size=\"12\">"
-            << escapeXml(shortNumber(referenceForce / 1000)) << " kN (one scale for every picture of this run)"
+            << escapeMarkup(shortNumber(referenceForce / 1000)) << " kN (one scale for every picture of this run)"
             << "</text></g>\n";
         ly += 40;
         for (const char* line : {"Arrows: force of the pin on the body at its", "axis (JointReaction); the bearing",
@@ -297,7 +285,7 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
     }
     ly += 10;
     svg << "<text x=\"" << num(lx) << "\" y=\"" << num(ly) << "\" font-size=\"11\" fill=\"#444\">Scale: "
-        << escapeXml(shortNumber(100 / pxPerM)) << " m per 100 px</text>\n</g>\n</svg>\n";
+        << escapeMarkup(shortNumber(100 / pxPerM)) << " m per 100 px</text>\n</g>\n</svg>\n";
     return svg.str();
 }
 

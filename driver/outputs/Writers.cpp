@@ -156,4 +156,18 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
     return written;
 }
 
+std::string escapeMarkup(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
 }  // namespace milldyn

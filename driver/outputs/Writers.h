@@ -48,4 +48,7 @@ bool renderGnuplotPng(const std::string& png, const std::string& commands, int w
 /// A number in the shortest form that reads back to the same double.
 std::string formatDouble(double v);
 
+/// `s` with &, <, > and " escaped, for HTML and SVG text and attributes.
+std::string escapeMarkup(const std::string& s);
+
 }  // namespace milldyn

@@ -2,6 +2,8 @@
 // Shared by the tests that run the built milldyn binary: a scratch directory
 // per test, and a run of the binary with its exit code, stdout and stderr.
 
+#include "tests/driver/ReadFile.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -19,13 +21,6 @@ struct BinaryResult {
     int code = -1;
     std::string out, err;
 };
-
-inline std::string slurp(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 /// A fresh directory per test (named after the test and the process),
 /// removed afterwards; run() executes `prefix milldyn args` in a shell.

@@ -2,6 +2,7 @@
 // sections: counts, which sections appear, where flagged and failed rows go,
 // escaping, the plots it draws, and that it leaves no temporary file.
 
+#include "tests/driver/ReadFile.h"
 #include "validation/report/ReportWriter.h"
 
 #include <gtest/gtest.h>
@@ -18,12 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readAll(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+std::string readAll(const fs::path& p) { return test::slurp(p); }
 
 fs::path freshDirectory(const std::string& name) {
     const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()));

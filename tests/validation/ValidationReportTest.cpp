@@ -3,6 +3,7 @@
 // MILLDYN_REPORT_CHECK_DIR, which the `report_render` test then opens in
 // headless Chromium (tests/report/render_check.sh).
 
+#include "tests/driver/ReadFile.h"
 #include "driver/Cli.h"
 #include "validation/report/ReportWriter.h"
 
@@ -18,12 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string readAll(const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+std::string readAll(const fs::path& p) { return test::slurp(p); }
 
 std::vector<ValidationRow> quickRows() {
     std::vector<ValidationRow> rows;

@@ -48,19 +48,6 @@ public:
     virtual std::string finish(const std::string& title) = 0;
 };
 
-std::string escapeHtml(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
 
 std::string escapeMarkdown(const std::string& s) {
     std::string out;
@@ -115,48 +102,48 @@ private:
 class HtmlDoc : public Doc {
 public:
     void heading(int level, const std::string& text, const std::string& anchor) override {
-        m_out << "<h" << level << (anchor.empty() ? "" : " id=\"" + escapeHtml(anchor) + "\"") << ">"
-              << escapeHtml(text) << "</h" << level << ">\n";
+        m_out << "<h" << level << (anchor.empty() ? "" : " id=\"" + escapeMarkup(anchor) + "\"") << ">"
+              << escapeMarkup(text) << "</h" << level << ">\n";
     }
     void paragraph(const std::string& label, const std::string& text) override {
         m_out << "<p>";
-        if (!label.empty()) m_out << "<strong>" << escapeHtml(label) << "</strong> ";
-        m_out << escapeHtml(text) << "</p>\n";
+        if (!label.empty()) m_out << "<strong>" << escapeMarkup(label) << "</strong> ";
+        m_out << escapeMarkup(text) << "</p>\n";
     }
     void bullets(const std::vector<std::string>& items) override {
         m_out << "<ul>\n";
-        for (const auto& i : items) m_out << "<li>" << escapeHtml(i) << "</li>\n";
+        for (const auto& i : items) m_out << "<li>" << escapeMarkup(i) << "</li>\n";
         m_out << "</ul>\n";
     }
     void table(const ReportTable& t) override {
         m_out << "<div class=\"scroll\"><table>\n";
-        if (!t.title.empty()) m_out << "<caption>" << escapeHtml(t.title) << "</caption>\n";
+        if (!t.title.empty()) m_out << "<caption>" << escapeMarkup(t.title) << "</caption>\n";
         m_out << "<thead><tr>";
-        for (const auto& h : t.header) m_out << "<th>" << escapeHtml(h) << "</th>";
+        for (const auto& h : t.header) m_out << "<th>" << escapeMarkup(h) << "</th>";
         m_out << "</tr></thead>\n<tbody>\n";
         for (const auto& row : t.rows) {
             m_out << "<tr>";
             for (const auto& cell : row) {
                 const bool status = cell == "pass" || cell == "fail" || cell == "flagged";
-                m_out << (status ? "<td class=\"" + cell + "\">" : "<td>") << escapeHtml(cell) << "</td>";
+                m_out << (status ? "<td class=\"" + cell + "\">" : "<td>") << escapeMarkup(cell) << "</td>";
             }
             m_out << "</tr>\n";
         }
         m_out << "</tbody>\n</table></div>\n";
-        if (!t.caption.empty()) m_out << "<p class=\"caption\">" << escapeHtml(t.caption) << "</p>\n";
+        if (!t.caption.empty()) m_out << "<p class=\"caption\">" << escapeMarkup(t.caption) << "</p>\n";
     }
     void image(const std::string& file, const std::string& alt, const std::string& caption) override {
-        m_out << "<figure><img src=\"" << escapeHtml(file) << "\" alt=\"" << escapeHtml(alt) << "\">";
-        if (!caption.empty()) m_out << "<figcaption>" << escapeHtml(caption) << "</figcaption>";
+        m_out << "<figure><img src=\"" << escapeMarkup(file) << "\" alt=\"" << escapeMarkup(alt) << "\">";
+        if (!caption.empty()) m_out << "<figcaption>" << escapeMarkup(caption) << "</figcaption>";
         m_out << "</figure>\n";
     }
     void beginFold(const std::string& summary) override {
-        m_out << "<details><summary>" << escapeHtml(summary) << "</summary>\n";
+        m_out << "<details><summary>" << escapeMarkup(summary) << "</summary>\n";
     }
     void endFold() override { m_out << "</details>\n"; }
     std::string finish(const std::string& title) override {
         std::ostringstream page;
-        page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << escapeHtml(title)
+        page << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << escapeMarkup(title)
              << "</title>\n<style>\n"
              << "body{font-family:'DejaVu Sans',sans-serif;max-width:1100px;margin:1em auto;padding:0 1em;"
                 "color:#222;line-height:1.4}\n"
