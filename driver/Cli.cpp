@@ -7,6 +7,7 @@
 #include "driver/SweepMpi.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
+#include "driver/outputs/Schematic.h"
 #include "driver/outputs/Writers.h"
 #include "plugins/ElementRegistry.h"
 #include "validation/cases/ValidationCases.h"
@@ -31,6 +32,7 @@ const char* kUsage =
     "                         [--integrator NAME] [--accuracy TOL] [--end-time T] [--quiet]\n"
     "                         [--preset fast|balanced|accurate]  (the model's presets:; --set and\n"
     "                         --integrator/--accuracy still win over the preset's choices)\n"
+    "                         [--schematic [--schematic-at t1,t2,...]]   (2-D pictures, docs/schematic.md)\n"
     "  milldyn info MODEL.yaml [--set path=value]...\n"
     "  milldyn validate [--filter TEXT] [--json] [--report DIR]\n"
     "  milldyn sweep MODEL.yaml (--grid path=a:b:n... | --lhs N --range path=a:b...) [--seed S]\n"
@@ -63,6 +65,8 @@ struct Arguments {
     std::size_t shardIndex = 0, shardCount = 1;
     bool shardGiven = false;
     bool mpi = false;  ///< sweep --mpi: one slice per MPI rank
+    bool schematic = false;     ///< run --schematic: SVG/PNG pictures of the machine
+    std::string schematicAt;    ///< --schematic-at: times or carrier angles
 };
 
 std::size_t parseCount(const std::string& option, const std::string& text, std::size_t max) {
@@ -109,6 +113,8 @@ Arguments parseArguments(const std::vector<std::string>& args) {
             a.shardGiven = true;
         }
         else if (arg == "--mpi") a.mpi = true;
+        else if (arg == "--schematic") a.schematic = true;
+        else if (arg == "--schematic-at") { a.schematicAt = value(i); a.schematic = true; }
         else if (arg == "--json") a.json = true;
         else if (arg == "--quiet") a.quiet = true;
         else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
@@ -119,6 +125,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
     if ((a.command == "run" || a.command == "info" || a.command == "sweep") && a.model.empty())
         throw UsageError(a.command + " needs a model file");
     if (!a.reportDir.empty() && a.command != "validate") throw UsageError("--report goes with validate");
+    if (a.schematic && a.command != "run") throw UsageError("--schematic goes with run");
     if (a.command == "merge") {
         if (a.model.empty()) throw UsageError("merge needs sweep directories");
         a.positional.insert(a.positional.begin(), a.model);
@@ -157,8 +164,23 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
             lastReport = now;
             err << "\r  simulated " << std::setprecision(4) << t << " of " << end << " s   " << std::flush;
         };
+    // --schematic: check before the run that there is something to draw.
+    std::unique_ptr<SchematicRecorder> recorder;
+    bool angles = false;
+    SampleObserver observer;
+    if (a.schematic) {
+        try {
+            recorder = std::make_unique<SchematicRecorder>(parseSchematicInstants(spec, a.schematicAt, angles));
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(e.what());
+        }
+        if (!sceneHasSketches(*buildScene(spec)))
+            throw UsageError("--schematic: nothing to draw in " + a.model +
+                             " (no element of it draws itself; GearMesh, SegmentCharge, BeltDrive and JointReaction do)");
+        observer = [&](const Scene& scene, const SimTK::State& s, double key) { recorder->observe(scene, s, key); };
+    }
     const auto start = std::chrono::steady_clock::now();
-    AnalysisResult result = runAnalysis(spec, progress);
+    AnalysisResult result = runAnalysis(spec, progress, observer);
     // What the preset picked, in the printed summary and summary.json.
     if (!spec.preset.empty()) {
         std::ostringstream picked;
@@ -178,8 +200,13 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
             throw AnalysisError("result " + r.name + " is not finite (the analysis diverged)");
 
     std::string warning;
-    const auto files = writeResultFiles(a.outDir, spec, result, info, warning);
+    auto files = writeResultFiles(a.outDir, spec, result, info, warning);
     if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
+    if (recorder) {
+        std::string w;
+        for (const auto& f : writeSchematics(a.outDir, spec.name, recorder->frames(), angles, w)) files.push_back(f);
+        if (!w.empty()) err << "milldyn: warning: " << w << "\n";
+    }
 
     if (a.quiet) return 0;
     out << spec.name << "\n  analysis: " << result.analysis << "\n";

@@ -338,7 +338,7 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
     if (!r.allFinite() || r.cwiseAbs().maxCoeff() > 1e-8 * speedScale) {
         Eigen::Index worst = 0;
         r.cwiseAbs().maxCoeff(&worst);
-        std::string where = worst < nu ? "acceleration of body " + scene.bodies()[worst].name
+        std::string where = worst < nu ? "acceleration of " + mobilityNames(scene, state)[worst]
                             : worst < nu + static_cast<Eigen::Index>(residuals.size())
                                 ? residuals[worst - nu].name
                                 : "held angle";

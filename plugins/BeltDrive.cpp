@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -86,12 +87,17 @@ double BeltDrive::calcFeedRate(const State& s) const {
     return m_p.fixedSheaveRadius * m_carrier.getOneU(s, kU) + m_p.drumSheaveRadius * m_drum.getOneU(s, kU);
 }
 
-BeltSpans BeltDrive::calcSpans(const State& s) const {
+Vec3 BeltDrive::calcFixedCentre(const State& s) const {
     // Sheave centres on the pin axes (the mobilizers' M frames).
-    return calcBeltSpans(m_carrier.findStationLocationInGround(s, m_carrier.getDefaultOutboardFrame().p()),
-                         m_p.fixedSheaveRadius,
-                         m_drum.findStationLocationInGround(s, m_drum.getDefaultOutboardFrame().p()),
-                         m_p.drumSheaveRadius);
+    return m_carrier.findStationLocationInGround(s, m_carrier.getDefaultOutboardFrame().p());
+}
+
+Vec3 BeltDrive::calcDrumCentre(const State& s) const {
+    return m_drum.findStationLocationInGround(s, m_drum.getDefaultOutboardFrame().p());
+}
+
+BeltSpans BeltDrive::calcSpans(const State& s) const {
+    return calcBeltSpans(calcFixedCentre(s), m_p.fixedSheaveRadius, calcDrumCentre(s), m_p.drumSheaveRadius);
 }
 
 double BeltDrive::calcGripRatio(const State& s) const {
@@ -272,6 +278,23 @@ void addCommonProbes(const std::string& name, const BeltDrive* belt, Scene& scen
                         tensions(s, l, t);
                         return rA * (l - t);  // on the drum about A, counter-clockwise +
                     }});
+    // Schematic: both sheaves, the carrier arm O-A and the two spans
+    // labelled with their tensions.
+    const double r0 = belt->params().fixedSheaveRadius;
+    scene.addSketch([belt, tensions, r0, rA](const State& s, Sketch& k) {
+        const BeltSpans b = belt->calcSpans(s);
+        double lead = 0, trail = 0;
+        tensions(s, lead, trail);
+        char tl[64], tt[64];
+        std::snprintf(tl, sizeof tl, "%.3g kN", lead / 1000);
+        std::snprintf(tt, sizeof tt, "%.3g kN", trail / 1000);
+        const Vec3 o = belt->calcFixedCentre(s), a = belt->calcDrumCentre(s);
+        k.circle("sheave", o[0], o[1], r0);
+        k.circle("sheave", a[0], a[1], rA);
+        k.line("carrier", o[0], o[1], a[0], a[1]);
+        k.line("belt", b.leadPoint[0], b.leadPoint[1], b.leadFixedPoint[0], b.leadFixedPoint[1], tl);
+        k.line("belt", b.trailPoint[0], b.trailPoint[1], b.trailFixedPoint[0], b.trailFixedPoint[1], tt);
+    });
     scene.addProbe({name + ".beta", "rad", ProbeRole::Generic, Stage::Position,
                     [belt](const State& s) { return belt->calcSpans(s).beta; }});
     scene.addProbe({name + ".wrap_fixed", "rad", ProbeRole::Generic, Stage::Position,

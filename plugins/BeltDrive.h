@@ -110,6 +110,10 @@ public:
     /// x = r0 q1 + r_A q2 [m] and x' [m/s].
     double calcFeed(const SimTK::State& s) const;
     double calcFeedRate(const SimTK::State& s) const;
+    /// Centres of the fixed sheave (carrier axis O) and of the drum sheave
+    /// (drum axis A) in ground [m] (Stage::Position).
+    SimTK::Vec3 calcFixedCentre(const SimTK::State& s) const;
+    SimTK::Vec3 calcDrumCentre(const SimTK::State& s) const;
     /// Spans in the current configuration (Stage::Position).
     BeltSpans calcSpans(const SimTK::State& s) const;
     /// e^(μ θ_min) [-]: the largest tension ratio the belt can hold.

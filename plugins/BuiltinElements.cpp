@@ -12,6 +12,8 @@ void registerCarrierDrive(ElementRegistry& registry);
 void registerJournalFriction(ElementRegistry& registry);
 void registerJointReaction(ElementRegistry& registry);
 void registerBeltDrive(ElementRegistry& registry);
+void registerDiscDrag(ElementRegistry& registry);
+void registerFlexibleRotor(ElementRegistry& registry);
 
 void registerBuiltinElements(ElementRegistry& registry) {
     registerInductionMotor(registry);
@@ -24,6 +26,8 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerJournalFriction(registry);
     registerJointReaction(registry);
     registerBeltDrive(registry);
+    registerDiscDrag(registry);
+    registerFlexibleRotor(registry);
 }
 
 }  // namespace milldyn

@@ -17,7 +17,7 @@ namespace milldyn {
 
 /// Bump when ElementSpec, Scene or this registry change incompatibly; a
 /// plugin built against another value is refused.
-constexpr int kPluginAbiVersion = 2;  // 2: SourceLocation::includedFrom
+constexpr int kPluginAbiVersion = 3;  // 2: SourceLocation::includedFrom; 3: Scene::addSketch
 
 /// Builds one element into a scene. Throws SpecError for input the schema
 /// could not catch, std::invalid_argument from element constructors.

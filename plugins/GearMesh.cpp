@@ -110,6 +110,15 @@ void buildGearMesh(const ElementSpec& spec, Scene& scene) {
     });
     // Steady running keeps the planet at this speed ratio to the carrier.
     scene.addSpeedRelation(planet->name, carrier->name, impl->calcPlanetSpeed(1.0));
+    // Schematic: the fixed gear about the carrier's axis, the carrier arm to
+    // the planet's axis, the planet's pitch circle.
+    const double R = p.fixedPitchRadius, rp = p.planetPitchRadius;
+    scene.addSketch([c, pl, R, rp](const State& s, Sketch& k) {
+        const Vec3 a = c.getBodyOriginLocation(s), b = pl.getBodyOriginLocation(s);
+        k.circle("fixed_gear", a[0], a[1], R, "fixed gear");
+        k.line("carrier", a[0], a[1], b[0], b[1]);
+        k.circle("gear", b[0], b[1], rp);
+    });
     scene.note("constraint " + spec.name + " (GearMesh)",
                planet->name + " rolls " + (p.internal ? "inside a fixed ring" : "on a fixed sun gear") +
                    " about " + carrier->name + "'s axis; mesh force along the line of action");

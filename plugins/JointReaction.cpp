@@ -31,6 +31,13 @@ void buildJointReaction(const ElementSpec& spec, Scene& scene) {
                     [force](const SimTK::State& s) { return force(s)[1]; }});
     scene.addProbe({stem + "_magnitude", "N", ProbeRole::Generic, SimTK::Stage::Acceleration,
                     [force](const SimTK::State& s) { return force(s).norm(); }});
+    // Schematic: the reaction as an arrow at the joint axis (same force as
+    // the _x_ground/_y_ground columns).
+    const std::string label = spec.name;
+    scene.addSketch([force, mobod, label](const SimTK::State& s, Sketch& k) {
+        const SimTK::Vec3 f = force(s), at = mobod.getBodyOriginLocation(s);
+        k.arrow("reaction", at[0], at[1], f[0], f[1], label);
+    });
     scene.note("output " + spec.name + " (JointReaction)",
                "force of " + body->name + "'s parent on it at its joint axis, ground axes");
 }

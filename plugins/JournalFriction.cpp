@@ -21,7 +21,8 @@ JournalFriction::JournalFriction(const SimbodyMatterSubsystem& matter, const Mob
 }
 
 void JournalFriction::realizeTopology(State& s) const {
-    m_keptLoad = m_matter.allocateAutoUpdateDiscreteVariable(s, Stage::Dynamics, new Value<Real>(0.0),
+    // [R_n, t_n, R_(n-1), t_(n-1)]: the reactions at the last two step ends.
+    m_keptLoad = m_matter.allocateAutoUpdateDiscreteVariable(s, Stage::Dynamics, new Value<Vec4>(Vec4(0)),
                                                              Stage::Acceleration);
 }
 
@@ -31,8 +32,16 @@ double JournalFriction::calcReaction(const State& s) const {
     return reactions[m_body.getMobilizedBodyIndex()][1].norm();
 }
 
+const Vec4& JournalFriction::history(const State& s) const {
+    return Value<Vec4>::downcast(m_matter.getDiscreteVariable(s, m_keptLoad));
+}
+
 double JournalFriction::getLoad(const State& s) const {
-    return Value<Real>::downcast(m_matter.getDiscreteVariable(s, m_keptLoad));
+    const Vec4& h = history(s);
+    if (m_p.coupling != ReactionCoupling::Extrapolated || !(h[1] > h[3])) return h[0];
+    // Linear in time through the last two step ends: continuous within the
+    // step, so the integrator's error control sees the load change.
+    return std::max(0.0, h[0] + (s.getTime() - h[1]) * (h[0] - h[2]) / (h[1] - h[3]));
 }
 
 double JournalFriction::calcTorque(const State& s) const {
@@ -47,7 +56,8 @@ double JournalFriction::calcPower(const State& s) const {
 double JournalFriction::refreshKeptLoad(State& s) const {
     m_matter.getSystem().realize(s, Stage::Acceleration);
     const double now = calcReaction(s), kept = getLoad(s);
-    Value<Real>::updDowncast(m_matter.updDiscreteVariable(s, m_keptLoad)) = now;
+    const double t = s.getTime();
+    Value<Vec4>::updDowncast(m_matter.updDiscreteVariable(s, m_keptLoad)) = Vec4(now, t, now, t);
     return std::abs(now - kept) / std::max(now, 1e-300);
 }
 
@@ -58,7 +68,9 @@ void JournalFriction::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Ve
 void JournalFriction::realizeAcceleration(const State& s) const {
     // Keep this step's reaction for the next (swapped in by the integrator
     // when the step is accepted).
-    Value<Real>::updDowncast(m_matter.updDiscreteVarUpdateValue(s, m_keptLoad)) = calcReaction(s);
+    const Vec4& h = history(s);
+    Value<Vec4>::updDowncast(m_matter.updDiscreteVarUpdateValue(s, m_keptLoad)) =
+        Vec4(calcReaction(s), s.getTime(), h[0], h[1]);
     m_matter.markDiscreteVarUpdateValueRealized(s, m_keptLoad);
 }
 
@@ -70,7 +82,10 @@ void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
     p.frictionCoefficient = spec.number("friction_coefficient");
     p.journalDiameter = spec.number("journal_diameter");
     p.smoothingSpeed = spec.number("smoothing_speed");
-    p.coupling = spec.text("reaction") == "iterated" ? ReactionCoupling::Iterated : ReactionCoupling::Lagged;
+    const std::string& coupling = spec.text("reaction");
+    p.coupling = coupling == "iterated"       ? ReactionCoupling::Iterated
+                 : coupling == "extrapolated" ? ReactionCoupling::Extrapolated
+                                              : ReactionCoupling::Lagged;
     auto* impl = new JournalFriction(scene.matter(), body->mobod, p);
     Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
@@ -100,7 +115,8 @@ void registerJournalFriction(ElementRegistry& registry) {
         P::quantity("friction_coefficient", "1", "f").atLeast(0).atMost(1),
         P::quantity("journal_diameter", "m", "d").atLeast(0),
         P::quantity("smoothing_speed", "rad/s", "ω_s of tanh(u/ω_s) near zero relative speed").optional(1e-3).above(0),
-        P::choice("reaction", {"lagged", "iterated"}, "reaction of the last step (fast) or solved (accurate)")
+        P::choice("reaction", {"lagged", "iterated", "extrapolated"},
+                  "reaction of the last step, made consistent each step, or extrapolated from the last two")
             .optional(std::string("lagged")),
     };
     registry.add({std::move(s), buildJournalFriction});

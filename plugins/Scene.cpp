@@ -67,6 +67,16 @@ double pinSpeed(const SimTK::State& state, const SimTK::MobilizedBody& body) {
     return body.getOneU(state, SimTK::MobilizerUIndex(0));
 }
 
+std::vector<std::string> mobilityNames(const Scene& scene, const SimTK::State& state) {
+    std::vector<std::string> names(state.getNU());
+    for (const auto& b : scene.bodies()) {
+        const int first = b.mobod.getFirstUIndex(state), n = b.mobod.getNumU(state);
+        for (int i = 0; i < n; ++i)
+            names.at(first + i) = n == 1 ? b.name : b.name + ".u" + std::to_string(i);
+    }
+    return names;
+}
+
 double pinAngle(const SimTK::State& state, const SimTK::MobilizedBody& body) {
     return body.getOneQ(state, SimTK::MobilizerQIndex(0));
 }

@@ -4,6 +4,8 @@
 // (named scalar functions of the state). A Scene is never shared between
 // threads; a sweep builds one per worker.
 
+#include "plugins/Sketch.h"
+
 #include <Simbody.h>
 
 #include <functional>
@@ -173,6 +175,12 @@ public:
     void addLaggedValue(LaggedValue v) { m_laggedValues.push_back(std::move(v)); }
     const std::vector<LaggedValue>& laggedValues() const { return m_laggedValues; }
 
+    /// How an element draws itself in the schematic (`run --schematic`):
+    /// called with a state realized to Stage::Acceleration.
+    using SketchFn = std::function<void(const SimTK::State&, Sketch&)>;
+    void addSketch(SketchFn f) { m_sketches.push_back(std::move(f)); }
+    const std::vector<SketchFn>& sketches() const { return m_sketches; }
+
     void note(const std::string& what, const std::string& why) { m_notes.push_back({what, why}); }
     const std::vector<BuildNote>& notes() const { return m_notes; }
 
@@ -197,6 +205,7 @@ private:
     std::vector<SpeedRelation> m_speedRelations;
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_switchables;
     std::vector<BuildNote> m_notes;
+    std::vector<SketchFn> m_sketches;
     std::vector<std::function<void(SimTK::State&)>> m_initializers;
     std::vector<KinetostaticUnknown> m_kinetostaticUnknowns;
     std::vector<LaggedValue> m_laggedValues;
@@ -207,5 +216,10 @@ private:
 double pinSpeed(const SimTK::State& state, const SimTK::MobilizedBody& body);
 /// The angle of a pin-jointed body about its axis [rad].
 double pinAngle(const SimTK::State& state, const SimTK::MobilizedBody& body);
+
+/// A name for every generalized speed u of the scene, in u order: the body's
+/// name for a one-mobility body (a pin), "body.u<i>" for body mobilities
+/// beyond one (gimbal, bushing). `state` must be realized to Model.
+std::vector<std::string> mobilityNames(const Scene& scene, const SimTK::State& state);
 
 }  // namespace milldyn

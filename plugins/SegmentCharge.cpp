@@ -1,5 +1,7 @@
 #include "plugins/SegmentCharge.h"
 
+#include <cstdio>
+
 #include "plugins/ElementRegistry.h"
 
 #include <cmath>
@@ -165,6 +167,17 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     // Scene bodies are pins (analyses read one angle and speed from each);
     // a welded charge is part of its drum.
     if (p.motion != ChargeMotionMode::WithDrum) scene.addBody(spec.name, chargeBody);
+    // Schematic: the drum wall and the charge's segment where it is now.
+    const MobilizedBody drumMobod = drum.mobod;
+    const std::string drumName = drum.name;
+    scene.addSketch([impl, drumMobod, drumName](const State& s, Sketch& k) {
+        const Vec3 b = drumMobod.getBodyOriginLocation(s);
+        const double r = impl->params().drumRadius;
+        k.circle("drum", b[0], b[1], r, drumName);
+        char lag[48];
+        std::snprintf(lag, sizeof lag, "lag %.0f deg", impl->calcLag(s) * 180 / M_PI);
+        k.segment("charge", b[0], b[1], r, impl->calcDirection(s), impl->params().halfAngle, lag);
+    });
     Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
 

@@ -10,6 +10,7 @@ packages=(
   gnuplot-nox fonts-dejavu-core
   openmpi-bin libopenmpi-dev
   chromium python3   # the validation report's render test (tests/report/render_check.sh)
+  librsvg2-bin       # rsvg-convert: PNG copies of `run --schematic` (docs/schematic.md)
 )
 
 missing=()

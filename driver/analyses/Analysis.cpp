@@ -79,6 +79,19 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
     };
     schemas["linearize"] = linearize;
 
+    ElementSchema statics;
+    statics.type = "static_deflection";
+    statics.doc = "Equilibrium at rest under the constant loads (gravity): every probe there and the "
+                  "deflection line of a FlexibleRotor (Newton on the accelerations); with spin_speed, the "
+                  "steady state of a rotor turning at that speed (a synchronous whirl under unbalance).";
+    statics.params = {
+        P::quantity("spin_speed", "rad/s", "speed held on spin_body (0: at rest); loads must then turn with "
+                                           "the rotor (unbalance), not stand still (no gravity)")
+            .optional(0.0),
+        P::body("spin_body", "pin whose speed is held (default: the first body)").optional(""),
+    };
+    schemas["static_deflection"] = statics;
+
     ElementSchema response;
     response.type = "frequency_response";
     response.doc = "Steady-state amplitude and phase of every coupling torque under one harmonic of a "
@@ -198,11 +211,19 @@ AnalysisResult runModelFile(const std::string& path, const std::vector<Override>
     return runAnalysis(spec);
 }
 
-AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress) {
-    if (spec.scenario.type == "transient") return runTransient(spec, progress);
+AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
+    // A charge held at its lag is a condition of one instant (its wall
+    // torque is solved per configuration), not a law a time step can use.
+    if (spec.scenario.type != "kinetostatic")
+        for (const auto& e : spec.elements)
+            if (e.type == "SegmentCharge" && e.text("motion") == "held")
+                throw e.error("motion", "a held charge is a kinetostatic model; analysis '" + spec.scenario.type +
+                                            "' needs motion: with_drum or dynamic_lag");
+    if (spec.scenario.type == "transient") return runTransient(spec, progress, observer);
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
     if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
-    if (spec.scenario.type == "kinetostatic") return runKinetostatic(spec, progress);
+    if (spec.scenario.type == "kinetostatic") return runKinetostatic(spec, progress, observer);
+    if (spec.scenario.type == "static_deflection") return runStaticDeflection(spec, progress);
     if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
     if (spec.scenario.type == "resonance_map") return runResonanceMap(spec, progress);
     throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");

@@ -75,16 +75,26 @@ std::vector<std::string> analysisKinds();
 /// Reports progress (simulated time, end time) of a long run.
 using ProgressFn = std::function<void(double, double)>;
 
+/// Sees every sample a transient or kinetostatic analysis records: its
+/// scene, the state (realized to Stage::Acceleration) and the table row's
+/// first column (time [s] or carrier angle [rad]). The schematic draws
+/// from it (driver/outputs/Schematic.h).
+using SampleObserver = std::function<void(const Scene&, const SimTK::State&, double key)>;
+
 /// Runs the model's scenario. Throws AnalysisError when it fails.
-AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress = {});
+AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress = {},
+                           const SampleObserver& observer = {});
 
 // The analyses themselves (one file each).
-AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress,
+                            const SampleObserver& observer = {});
 AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn& progress);
-AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress,
+                               const SampleObserver& observer = {});
 AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress);
+AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn& progress);
 
 /// Sum of every probe with this role in this state.
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);

@@ -75,7 +75,7 @@ int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
 
 }  // namespace
 
-AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress) {
+AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     const ElementSpec& sc = spec.scenario;
     auto scene = buildScene(spec);
     const SceneBody& carrier = scenarioBody(*scene, sc, "carrier");
@@ -113,6 +113,7 @@ AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress
                 throw AnalysisError("kinetostatic: a non-finite output at carrier angle " + std::to_string(angle) +
                                     " rad");
         result.rows.push_back(std::move(row));
+        if (observer) observer(*scene, state, angle);  // realized by solveInstant
         if (progress) progress(k + 1, points);
     }
     result.statistics.realizations = iterations;

@@ -7,13 +7,28 @@
 
 namespace milldyn {
 
-LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint) {
+void calcUndampedModes(LinearModel& lm) {
+    const int n = static_cast<int>(lm.M.rows());
+    // Undamped modes: K is symmetric for our elements up to the differencing
+    // error; its symmetric part is what the generalized solver needs.
+    const Eigen::MatrixXd Ksym = 0.5 * (lm.K + lm.K.transpose());
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(Ksym, lm.M);
+    lm.naturalFrequencies = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+    lm.modeShapes = modes.eigenvectors();
+    for (int c = 0; c < n; ++c) {
+        Eigen::Index at = 0;
+        lm.modeShapes.col(c).cwiseAbs().maxCoeff(&at);
+        lm.modeShapes.col(c) /= lm.modeShapes(at, c);
+    }
+}
+
+LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes) {
     const SimTK::System& system = scene.system();
     SimTK::State x0 = operatingPoint;
     scene.setExcitationsOn(x0, false);
     const int n = x0.getNU();
     if (x0.getNQ() != n)
-        throw AnalysisError("linearize: only pin joints are supported (nq = nu), got nq = " +
+        throw AnalysisError("linearize: only joints whose q̇ = u (pins, gimbals, bushings) are supported, got nq = " +
                             std::to_string(x0.getNQ()) + ", nu = " + std::to_string(n));
     const auto& probes = scene.probes();
     const int np = static_cast<int>(probes.size());
@@ -62,6 +77,12 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     lm.A.topRightCorner(n, n) = Eigen::MatrixXd::Identity(n, n);
     lm.A.bottomLeftCorner(n, n) = dUdq;
     lm.A.bottomRightCorner(n, n) = dUdu;
+    lm.dofNames = mobilityNames(scene, x0);
+    for (const auto& p : probes) {
+        lm.outputNames.push_back(p.name);
+        lm.outputUnits.push_back(p.unit);
+    }
+    if (!withModes) return lm;
     Eigen::EigenSolver<Eigen::MatrixXd> eig(lm.A);
     std::vector<std::complex<double>> ev(eig.eigenvalues().data(), eig.eigenvalues().data() + 2 * n);
     std::sort(ev.begin(), ev.end(), [](const auto& a, const auto& b) {
@@ -72,22 +93,7 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     });
     lm.eigenvalues = Eigen::Map<Eigen::VectorXcd>(ev.data(), 2 * n);
 
-    // Undamped modes: K is symmetric for our elements up to the differencing
-    // error; its symmetric part is what the generalized solver needs.
-    const Eigen::MatrixXd Ksym = 0.5 * (lm.K + lm.K.transpose());
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(Ksym, lm.M);
-    lm.naturalFrequencies = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-    lm.modeShapes = modes.eigenvectors();
-    for (int c = 0; c < n; ++c) {
-        Eigen::Index at = 0;
-        lm.modeShapes.col(c).cwiseAbs().maxCoeff(&at);
-        lm.modeShapes.col(c) /= lm.modeShapes(at, c);
-    }
-    for (const auto& b : scene.bodies()) lm.dofNames.push_back(b.name);
-    for (const auto& p : probes) {
-        lm.outputNames.push_back(p.name);
-        lm.outputUnits.push_back(p.unit);
-    }
+    calcUndampedModes(lm);
     return lm;
 }
 

@@ -10,7 +10,7 @@
 
 namespace milldyn {
 
-AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
+AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     const ElementSpec& sc = spec.scenario;
     checkStopSpeed(spec);
     auto scene = buildScene(spec);
@@ -45,6 +45,11 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress) {
     std::vector<double> peakCoupling(scene->probes().size(), 0.0);
     auto onSample = [&](const SimTK::State& s) {
         table.record(s);
+        if (observer) {
+            SimTK::State drawn = s;
+            scene->system().realize(drawn, SimTK::Stage::Acceleration);
+            observer(*scene, drawn, s.getTime());
+        }
         if (s.getTime() <= switchTime && s.getTime() > copyFrom) {
             steady = s;
             steadyCopied = true;

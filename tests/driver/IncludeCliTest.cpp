@@ -2,6 +2,8 @@
 // sweeps by its prefixed names, and an error in a part exits 2 with one line
 // that is located in the part and ends with the include chain.
 
+#include "tests/driver/BinaryRunFixture.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -19,38 +21,13 @@ namespace fs = std::filesystem;
 
 const std::string kData = std::string(MILLDYN_SOURCE_DIR) + "/tests/testdata";
 
-struct Result {
-    int code = -1;
-    std::string out, err;
-};
+using Result = milldyn::test::BinaryResult;
+using milldyn::test::slurp;
 
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-class CliInclude : public ::testing::Test {
+class CliInclude : public milldyn::test::BinaryRunFixture {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        m_dir = fs::temp_directory_path() /
-                ("milldyn-includecli-" + std::string(info->name()) + "-" + std::to_string(::getpid()));
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(m_dir, ec);
-    }
-    Result run(const std::string& args) const {
-        const std::string out = (m_dir / "stdout").string(), err = (m_dir / "stderr").string();
-        const int status =
-            std::system((std::string(MILLDYN_BINARY) + " " + args + " </dev/null >" + out + " 2>" + err).c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-    }
-    fs::path m_dir;
+    CliInclude() : BinaryRunFixture("includecli") {}
+    Result run(const std::string& args) const { return BinaryRunFixture::run("", args); }
 };
 
 TEST_F(CliInclude, AssembledLayoutSweepsOverAnIncludedValueByItsPrefixedName) {

@@ -3,6 +3,8 @@
 // points (so it resumes), and the mode cannot be mixed up with --shard or
 // left out under mpirun. Skipped in a build without MPI.
 
+#include "tests/driver/BinaryRunFixture.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -35,39 +37,13 @@ const std::string kSweep = "sweep " + kModel +
 const std::string kMpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " + kMpiexec +
                             " --oversubscribe -np 2 ";
 
-struct Result {
-    int code = -1;
-    std::string out, err;
-};
+using Result = milldyn::test::BinaryResult;
+using milldyn::test::slurp;
 
-std::string slurp(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-class MpiSweepTest : public ::testing::Test {
+class MpiSweepTest : public milldyn::test::BinaryRunFixture {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        m_dir = fs::temp_directory_path() / ("milldyn-mpitest-" + std::string(info->name()) + "-" +
-                                             std::to_string(::getpid()));
-        fs::remove_all(m_dir);
-        fs::create_directories(m_dir);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(m_dir, ec);
-    }
-    /// Runs a shell command line (prefix + milldyn + arguments).
-    Result run(const std::string& prefix, const std::string& args) const {
-        const std::string out = (m_dir / "stdout").string(), err = (m_dir / "stderr").string();
-        const std::string cmd = prefix + MILLDYN_BINARY + " " + args + " </dev/null >" + out + " 2>" + err;
-        const int status = std::system(cmd.c_str());
-        return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-    }
-    fs::path m_dir;
+    MpiSweepTest() : BinaryRunFixture("mpitest") {}
+    using BinaryRunFixture::run;
 };
 
 TEST_F(MpiSweepTest, TwoRanksWriteTheSingleProcessTableByteForByteAndResume) {

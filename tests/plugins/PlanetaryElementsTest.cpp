@@ -244,7 +244,7 @@ TEST(JournalFriction, WheelUnderGravityDeceleratesAtItsWeightTimesFrictionArm) {
     // M = m g f d/2 (tanh = 1 to 1e-300 above 1 rad/s) and the wheel slows
     // at M/J: u(t) = 20 − M t/J, exactly, for both couplings.
     const double m = 3, J = 0.05, f = 0.1, d = 0.04, g = 9.80665;
-    for (const std::string coupling : {"lagged", "iterated"}) {
+    for (const std::string coupling : {"lagged", "iterated", "extrapolated"}) {
         const std::string text =
             "format_version: 1\nname: wheel\ngravity: [0, -9.80665 m/s^2, 0]\n"
             "bodies:\n  - {name: wheel, mass: 3 kg, inertia: 0.05 kg*m^2, initial_speed: 20 rad/s, joint: {type: "
@@ -315,6 +315,23 @@ TEST(PlanetaryModelKeys, PendulumUnderGravityHoldsWithTheStaticTorque) {
     EXPECT_NEAR(probe(*scene, s, "hold.torque"), 0.980665, 1e-12);
     EXPECT_NEAR(probe(*scene, s, "RA.on_arm_at_axis_y_ground"), 9.80665, 1e-12);
     EXPECT_NEAR(probe(*scene, s, "RA.on_arm_at_axis_x_ground"), 0.0, 1e-12);
+}
+
+TEST(PlanetaryModelKeys, AHeldChargeIsRefusedOutsideKinetostatics) {
+    const std::string text =
+        mill("  - {type: SegmentCharge, name: charge, drum: drum, drum_radius: 0.05 m, length: 0.2 m, bulk_density: "
+             "4800 kg/m^3, motion: held, lag: 45 deg}\n");
+    const std::string transient = test::replacedIn(text, "scenario: {analysis: kinetostatic, angle_points: 1}",
+                                                   "scenario: {analysis: transient, end_time: 1 s}");
+    const ModelSpec spec = readText("t.yaml", transient, {});
+    try {
+        runAnalysis(spec);
+        ADD_FAILURE() << "a transient with a held charge was accepted";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.key(), "charge.motion");
+        EXPECT_EQ(e.where().line, 9);
+    }
+    EXPECT_NO_THROW(runAnalysis(readText("t.yaml", text, {})));
 }
 
 }  // namespace

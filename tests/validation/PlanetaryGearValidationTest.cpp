@@ -33,10 +33,12 @@ TEST(PlanetaryGearValidation, MisprintAndFirstOrderFrictionAreFlagged) {
     std::set<std::string> flagged;
     for (const auto& r : allRows())
         if (r.status == "flagged") flagged.insert(r.caseName + ": " + r.quantity);
-    EXPECT_EQ(flagged.size(), 4u);
+    EXPECT_EQ(flagged.size(), 6u);
     for (const std::string size : {"100x200", "500x1000"}) {
         EXPECT_EQ(flagged.count("planetary_gear_" + size + "_start_up: J_pr as printed in (1), 2(J1 + ...)"), 1u);
         EXPECT_EQ(flagged.count("planetary_gear_" + size + "_start_friction: friction torque at B2, f = 0.01"), 1u);
+        EXPECT_EQ(flagged.count("planetary_gear_" + size + "_steady_held_lag90: friction torque at B2, f = 0.01"),
+                  1u);
     }
 }
 

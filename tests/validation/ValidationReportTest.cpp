@@ -34,6 +34,16 @@ std::vector<ValidationRow> quickRows() {
     for (const char* c : {"roll_crusher_2mass_roots", "roll_crusher_10mass_modes", "roll_crusher_stagger",
                           "roll_crusher_resonance_map", "roll_crusher_approximation_sweep"})
         add(rollCrusherCases(c));
+    // The planetary mills' kinetostatic cases (no integrated start).
+    for (const char* c : {"planetary_gear_100x200_fig10_initial_torque_vs_tp",
+                          "planetary_gear_500x1000_fig10_initial_torque_vs_tp", "planetary_gear_100x200_start_up",
+                          "planetary_gear_100x200_steady_held_lag"})
+        add(planetaryGearCases(c));
+    for (const char* c : {"planetary_belt_fig3_printed", "planetary_belt_c_to_1", "planetary_belt_map_omega",
+                          "planetary_belt_map_c"})
+        add(planetaryBeltCases(c));
+    add(beadMillCases("bead_mill_static_5disc_0p1m"));
+    add(beadMillCases("bead_mill_eq2_fit"));  // with flagged rows
     return rows;
 }
 
@@ -46,8 +56,15 @@ TEST(ValidationReport, BothMachinesWithTable1PlotsAndFlaggedMisprints) {
     writeValidationReport(dir.string(), rows, reportSections(), warning);
     EXPECT_EQ(warning, "");
     for (const char* png : {"burr_mill_table1_Mc", "burr_mill_coastdown_5p5kW", "burr_mill_coastdown_3p2kW",
-                            "burr_mill_coastdown_error", "roll_crusher_resonance_map", "roll_crusher_mode_shapes"})
+                            "burr_mill_coastdown_error", "roll_crusher_resonance_map", "roll_crusher_mode_shapes",
+                            "bead_mill_deflection_line"})
         EXPECT_TRUE(fs::exists(dir / (std::string(png) + ".png"))) << png;
+    for (const char* png : {"planetary_gear_fig10_a", "planetary_gear_holding_torque", "planetary_belt_reaction",
+                            "planetary_belt_reaction_polar", "planetary_belt_tensions", "planetary_belt_map_omega",
+                            "planetary_belt_map_c"})
+        EXPECT_TRUE(fs::exists(dir / (std::string(png) + ".png"))) << png;
+    // Not asked for: the start-history cases were left out, so no history plot.
+    EXPECT_FALSE(fs::exists(dir / "planetary_gear_fig10_b_100x200.png"));
     // Not asked for: the response case was left out, so no response plot.
     EXPECT_FALSE(fs::exists(dir / "roll_crusher_response.png"));
 
@@ -59,7 +76,22 @@ TEST(ValidationReport, BothMachinesWithTable1PlotsAndFlaggedMisprints) {
     EXPECT_GT(counts.flagged, 0);
     EXPECT_NE(md.find("## MMP-50 burr mill (seed 003)"), std::string::npos);
     EXPECT_NE(md.find("## Single-roll crusher (seed 004)"), std::string::npos);
+    EXPECT_NE(md.find("## Horizontal planetary mill, external rolling (seed 000)"), std::string::npos);
+    EXPECT_NE(md.find("## Planetary mill with belt drive (seed 002)"), std::string::npos);
+    EXPECT_NE(md.find("## Horizontal bead mill rotor (seed 001)"), std::string::npos);
+    EXPECT_NE(md.find("| d(5 discs, 0.1 m, L\\_p 0.15 m) | 16.5 | 16.64 | 23.47 (flagged) |"), std::string::npos);
     EXPECT_EQ(md.find("Other cases"), std::string::npos) << "every row belongs to a machine";
+    // Fig. 10 (a) side by side: at t_p = 0.3 s the ratio 1/(1 − e^(−0.3)) =
+    // 3.858 of both sizes, beside the paper's "≈ 4× at 0.3–0.4 s".
+    const std::size_t fig10 = md.find("| 0.3 |", md.find("Fig. 10, reading (a)"));
+    ASSERT_NE(fig10, std::string::npos);
+    const std::string row = md.substr(fig10, md.find('\n', fig10) - fig10);
+    EXPECT_NE(row.find("| 3.858 | 3.85"), std::string::npos) << row;
+    EXPECT_NE(row.find("≈ 4× at 0.3–0.4 s"), std::string::npos) << row;
+    // The J_pr misprint flagged with its explanation, and c → 1 tabled.
+    EXPECT_NE(md.find("misprint: the carrier counted twice"), std::string::npos);
+    // c = 1: ω = Ω(1 − 1) = 0 in model and oracle, drum_turns 0.
+    EXPECT_NE(md.find("| 1 | 0 | 0 | 0 |", md.find("c → 1: the drum translates")), std::string::npos);
     // Table 1 side by side: the misprinted row flagged, its corrected reading
     // beside it, the untouched row with paper, oracle and multibody.
     EXPECT_NE(md.find("| 5.5 kW 50-70 kg/h | 1.1 | 18.1 (flagged) | 16.48"), std::string::npos);

@@ -22,6 +22,7 @@
 
 #include "driver/ModelFile.h"
 #include "driver/analyses/Analysis.h"
+#include "validation/cases/PlanetaryBeltCases.h"
 #include "validation/cases/ValidationCases.h"
 #include "validation/oracles/PlanetaryBeltOracle.h"
 
@@ -46,11 +47,8 @@ constexpr double kTolerance = 1e-6;
 constexpr double kDrumRadius = 0.1;  // r_b [m], the printed 0.2 m drum
 const char* kModel = "/planetary_belt_200x1000.yaml";
 
-std::string fmt(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+/// Exact, for overrides.
+std::string fmt(double v) { return formatExact(v); }
 
 /// Short form for labels.
 std::string num(double v) {
@@ -392,26 +390,32 @@ void fig3Cases(const std::string& filter, std::vector<ValidationRow>& rows) {
     }
 }
 
-void mapCases(const std::string& filter, std::vector<ValidationRow>& rows) {
-    struct Point {
-        std::string map;
-        std::function<void(BeltCase&)> apply;
-        std::string label;
-    };
-    std::vector<Point> points;
+struct MapPoint {
+    std::string map;
+    std::function<void(BeltCase&)> apply;
+    std::string label;
+    double value;
+};
+
+std::vector<MapPoint> mapPoints() {
+    std::vector<MapPoint> points;
     for (double w : {30.0, 40.0, 50.0, 60.0, 70.0, 80.0})
-        points.push_back({"omega", [w](BeltCase& c) { c.rate = w; }, "Ω = " + num(w) + " rad/s"});
+        points.push_back({"omega", [w](BeltCase& c) { c.rate = w; }, "Ω = " + num(w) + " rad/s", w});
     for (double g : {30.0, 60.0, 90.0, 120.0})
-        points.push_back({"gamma", [g](BeltCase& c) { c.halfAngle = g * M_PI / 180; }, "γ = " + num(g) + "°"});
+        points.push_back({"gamma", [g](BeltCase& c) { c.halfAngle = g * M_PI / 180; }, "γ = " + num(g) + "°", g});
     for (double k : {0.1, 0.2, 0.3, 0.4})
-        points.push_back({"k", [k](BeltCase& c) { c.rate = 60; c.criteria.k = k; }, "Ω = 60, k = " + num(k)});
+        points.push_back({"k", [k](BeltCase& c) { c.rate = 60; c.criteria.k = k; }, "Ω = 60, k = " + num(k), k});
     for (double b : {0.6, 0.8, 1.0, 1.2, 1.4})
         points.push_back({"b", [b](BeltCase& c) { c.rate = 60; c.criteria = {0.4, b, 0.5}; },
-                          "Ω = 60, k = 0.4, b = " + num(b)});
+                          "Ω = 60, k = 0.4, b = " + num(b), b});
     for (double cv : {0.2, 0.4, 0.6, 0.8, 1.0})
         points.push_back({"c", [cv](BeltCase& c) { c.rate = 60; c.criteria = {0.4, 1.0, cv}; },
-                          "Ω = 60, k = 0.4, b = 1, c = " + num(cv)});
-    for (const Point& p : points) {
+                          "Ω = 60, k = 0.4, b = 1, c = " + num(cv), cv});
+    return points;
+}
+
+void mapCases(const std::string& filter, std::vector<ValidationRow>& rows) {
+    for (const MapPoint& p : mapPoints()) {
         const std::string name = "planetary_belt_map_" + p.map;
         if (!wanted(name, filter)) continue;
         BeltCase c;
@@ -422,8 +426,8 @@ void mapCases(const std::string& filter, std::vector<ValidationRow>& rows) {
         const double printed = oc::calcPaperReactionExtremes(c.rate, c.halfAngle, c.criteria,
                                                              {kDrumRadius, c.material, c.lag, c.reading, c.moment})
                                    .max;
-        rows.push_back(info(name, p.label + ": R_A,max model (oracle column: (15)-(18) as printed)", "N", t.modelMax,
-                            printed, "map point"));
+        rows.push_back(info(name, planetaryBeltMapQuantity({p.map, p.value, p.label}), "N", t.modelMax, printed,
+                            "map point"));
     }
 }
 
@@ -542,6 +546,33 @@ void startUpCases(const std::string& filter, std::vector<ValidationRow>& rows) {
 }
 
 }  // namespace
+
+std::vector<PlanetaryBeltMapPoint> planetaryBeltMapPoints() {
+    std::vector<PlanetaryBeltMapPoint> out;
+    for (const MapPoint& p : mapPoints()) out.push_back({p.map, p.value, p.label});
+    return out;
+}
+
+std::string planetaryBeltMapQuantity(const PlanetaryBeltMapPoint& p) {
+    return p.label + ": R_A,max model (oracle column: (15)-(18) as printed)";
+}
+
+PlanetaryBeltTurnCurves calcPlanetaryBeltFig3Turn(int points) {
+    const BeltCase c;
+    const oc::PlanetaryBeltOracle oracle(oracleParameters(c));
+    const AnalysisResult r = runAnalysis(modelFor(c, "paper", {{"scenario.angle_points", std::to_string(points)}}));
+    PlanetaryBeltTurnCurves t;
+    for (int k = 0; k < points; ++k) {
+        const double phi = at(r, k, "carrier_angle");
+        t.angle.push_back(phi);
+        t.model.push_back(drumReaction(r, k).norm());
+        t.rebuilt.push_back(oracle.calcRebuiltReaction(phi, oc::ChargeInertia::SteadyCentroid).rA);
+        t.paper.push_back(oracle.calcPaperReaction(phi).rA);
+        t.tight.push_back(at(r, k, "belt1.tension_tight"));
+        t.slack.push_back(at(r, k, "belt1.tension_slack"));
+    }
+    return t;
+}
 
 std::vector<ValidationRow> planetaryBeltCases(const std::string& filter) {
     std::vector<ValidationRow> rows;

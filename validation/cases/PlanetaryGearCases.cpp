@@ -15,10 +15,12 @@
 
 #include "driver/ModelFile.h"
 #include "driver/analyses/Analysis.h"
+#include "validation/cases/PlanetaryGearCases.h"
 #include "validation/cases/ValidationCases.h"
 #include "validation/oracles/PlanetaryGearOracle.h"
 
 #include <cmath>
+#include <functional>
 #include <string>
 
 namespace milldyn {
@@ -72,11 +74,7 @@ double steadyRate(const Size& size) {
 constexpr double kAccelerationTime = 4.6;  // [s], the paper's (24)
 
 /// Exact, for overrides.
-std::string fmt(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+std::string fmt(double v) { return formatExact(v); }
 
 /// Short, for labels.
 std::string label(double v) {
@@ -136,6 +134,35 @@ bool wanted(const std::string& name, const std::string& filter) {
     return filter.empty() || name.find(filter) != std::string::npos;
 }
 
+/// Friction torque at B2 from the model's own reactions vs (21) from the
+/// frictionless reactions (the paper's first-order method) at f = 0.01,
+/// flagged; and the check that they differ at first order in f (the
+/// difference falls tenfold with f). Returns the model's f = 0.01 table.
+AnalysisResult frictionRows(std::vector<ValidationRow>& rows, const std::string& name, const Size& size,
+                            const std::vector<Override>& base,
+                            const std::function<oc::PlanetaryGearLoads(double)>& oracleLoads) {
+    auto model = [&](double f) {
+        std::vector<Override> o = base;
+        for (const char* j : {"friction_A", "friction_B1", "friction_B2"})
+            o.push_back({std::string("elements.") + j + ".friction_coefficient", fmt(f)});
+        return runKinetostatic(size, o);
+    };
+    const AnalysisResult r1 = model(0.01), r2 = model(0.001);
+    const double m1 = at(r1, 0, "friction_B2.torque"), m2 = at(r2, 0, "friction_B2.torque");
+    const double o1 = oracleLoads(0.01).drums[1].bearingFrictionTorque;
+    const double o2 = oracleLoads(0.001).drums[1].bearingFrictionTorque;
+    ValidationRow row = compareRow(name, "friction torque at B2, f = 0.01", "N*m", m1, o1, 0.0,
+                                   "oracle: frictionless reactions (the paper's first-order method); model: "
+                                   "reactions including friction");
+    row.status = "flagged";
+    rows.push_back(row);
+    rows.push_back(compareRow(name, "first-order difference: d(f=0.01)/d(f=0.001)", "1",
+                              ((m1 - o1) / o1) / ((m2 - o2) / o2), 10.0, 0.02,
+                              "the paper's method neglects O(f) of the friction torque; the ratio is 10 up to "
+                              "O(f) = 1 %"));
+    return r1;
+}
+
 void startUpCases(const Size& size, const std::string& filter, std::vector<ValidationRow>& rows) {
     const oc::PlanetaryGearOracle oracle(oracleParameters(size, 0));
     const double eps0 = oracle.calcInitialAcceleration(steadyRate(size), kAccelerationTime);
@@ -181,29 +208,13 @@ void startUpCases(const Size& size, const std::string& filter, std::vector<Valid
         // to 1e-12. So they differ at first order in f. That is checked:
         // the difference must fall tenfold when f does.
         const double w = 0.5;
-        auto frictionTorqueAtB2 = [&](double f, double& oracleValue) {
-            const oc::PlanetaryGearOracle withF(oracleParameters(size, f));
-            oc::PlanetaryGearMotionState st = oc::PlanetaryGearOracle::makeStartUpState(eps0);
-            st.carrierRate = w;
-            oracleValue = withF.calcLoads(st, oc::ChargeMotion::kRotatesWithDrum).drums[1].bearingFrictionTorque;
-            std::vector<Override> o = {{"scenario.carrier_speed", fmt(w) + " rad/s"}};
-            for (const char* j : {"friction_A", "friction_B1", "friction_B2"})
-                o.push_back({std::string("elements.") + j + ".friction_coefficient", fmt(f)});
-            const AnalysisResult r = runKinetostatic(size, o);
-            return std::make_pair(at(r, 0, "friction_B2.torque"), r);
-        };
-        double oracle1 = 0, oracle2 = 0;
-        const auto [model1, r1] = frictionTorqueAtB2(0.01, oracle1);
-        const auto [model2, r2] = frictionTorqueAtB2(0.001, oracle2);
-        ValidationRow row = compareRow(nFriction, "friction torque at B2, f = 0.01", "N*m", model1, oracle1, 0.0,
-                                       "oracle: frictionless reactions (the paper's first-order method); model: "
-                                       "reactions including friction");
-        row.status = "flagged";
-        rows.push_back(row);
-        const double d1 = (model1 - oracle1) / oracle1, d2 = (model2 - oracle2) / oracle2;
-        rows.push_back(compareRow(nFriction, "first-order difference: d(f=0.01)/d(f=0.001)", "1", d1 / d2, 10.0, 0.02,
-                                  "the paper's method neglects O(f) of the friction torque; the ratio is 10 up "
-                                  "to O(f) = 1 %"));
+        const AnalysisResult r1 = frictionRows(
+            rows, nFriction, size, {{"scenario.carrier_speed", fmt(w) + " rad/s"}}, [&](double f) {
+                oc::PlanetaryGearMotionState st = oc::PlanetaryGearOracle::makeStartUpState(eps0);
+                st.carrierRate = w;
+                return oc::PlanetaryGearOracle(oracleParameters(size, f))
+                    .calcLoads(st, oc::ChargeMotion::kRotatesWithDrum);
+            });
         const oc::PlanetaryGearOracle withF(oracleParameters(size, 0.01));
         oc::PlanetaryGearMotionState st = oc::PlanetaryGearOracle::makeStartUpState(eps0);
         st.carrierRate = w;
@@ -282,6 +293,18 @@ void steadyCases(const Size& size, const std::string& filter, std::vector<Valida
                                   kKinetostaticTolerance, note));
         rows.back().relError = worstJ;
         rows.back().status = worstJ <= kKinetostaticTolerance ? "pass" : "fail";
+        if (v.tag == "held_lag90") {
+            // Steady friction (the paper's whole steady torque at α = 90°),
+            // judged like the start's.
+            std::vector<Override> f = o;
+            for (auto& x : f)
+                if (x.path == "scenarios.turn.angle_points") x.value = "1";
+            frictionRows(rows, name, size, f, [&](double fc) {
+                oc::PlanetaryGearParameters q = oracleParameters(size, fc);
+                q.lagAngle = v.lag;
+                return oc::PlanetaryGearOracle(q).calcSteadyStateLoads(w, 0.0, v.motion);
+            });
+        }
         if (v.motion == oc::ChargeMotion::kHeldInCarrierFrame) {
             // The charge-holding ("lifting") torque the paper's "only friction
             // in steady state" leaves out: M = 2 T_wall R/r, frictionless.
@@ -304,6 +327,15 @@ void steadyCases(const Size& size, const std::string& filter, std::vector<Valida
                                       "centrifugal part ∝ cos α)"));
         }
     }
+}
+
+/// The multibody start without friction, sampled every `interval` [s].
+AnalysisResult runStart(const Size& size, double interval) {
+    std::vector<Override> o = noFriction();
+    o.push_back({"use_scenario", "start"});
+    o.push_back({"outputs.sample_interval", fmt(interval) + " s"});
+    o.push_back({"integrator.accuracy", "1e-10"});
+    return runKinetostatic(size, o);
 }
 
 /// The sample of `r` at time `t` (samples every `interval` from 0).
@@ -329,12 +361,12 @@ void figure10Cases(const Size& size, const std::string& filter, std::vector<Vali
             return at(runKinetostatic(size, o), 0, "drive.torque");
         };
         const double asymptote = modelTorque(tpLong);
-        for (double tp : {std::log(4.0 / 3.0), 0.3, 0.4, 1.0, 3.0, 4.6}) {
+        for (double tp : planetaryGearFig10AccelerationTimes()) {
             const double m = modelTorque(tp);
-            rows.push_back(compareRow(nA, "M(t_p = " + label(tp) + " s)", "N*m", m,
+            rows.push_back(compareRow(nA, planetaryGearFig10TorqueQuantity(tp), "N*m", m,
                                       oracle.calcInitialTorqueVsAccelerationTime(wy, tp), kKinetostaticTolerance,
                                       "reading (a) of Fig. 10: (20) at ω = 0 with ε0 = ω_y/(1 − e^(−t_p))"));
-            ValidationRow ratio = compareRow(nA, "M(t_p)/M(∞) at t_p = " + label(tp) + " s",
+            ValidationRow ratio = compareRow(nA, planetaryGearFig10RatioQuantity(tp),
                                              "1", m / asymptote,
                                              oc::PlanetaryGearOracle::calcInitialTorqueRatio(tp, 1.0),
                                              kKinetostaticTolerance, "1/(1 − e^(−t_p)), independent of size");
@@ -359,17 +391,13 @@ void figure10Cases(const Size& size, const std::string& filter, std::vector<Vali
     // friction is first order only (see the start_friction case).
     const std::string nB = base + "_start_history";
     if (wanted(nB, filter)) {
-        std::vector<Override> o = noFriction();
-        o.push_back({"use_scenario", "start"});
-        o.push_back({"outputs.sample_interval", "0.05 s"});
-        o.push_back({"integrator.accuracy", "1e-10"});
-        const AnalysisResult r = runKinetostatic(size, o);
-        for (double t : {0.1, 0.5, 1.0, 2.0, 3.0, 5.0}) {
+        const AnalysisResult r = runStart(size, 0.05);
+        for (double t : planetaryGearStartHistoryTimes()) {
             const double full =
                 oracle.calcStartTorqueHistory(wy, kAccelerationTime, t, oc::StartTorqueModel::kRigidChargeKinetostatics);
             const double paperModel =
                 oracle.calcStartTorqueHistory(wy, kAccelerationTime, t, oc::StartTorqueModel::kPaperTangentialInertia);
-            ValidationRow row = compareRow(nB, "M(t = " + label(t) + " s) of the start, f = 0", "N*m",
+            ValidationRow row = compareRow(nB, planetaryGearStartHistoryQuantity(t), "N*m",
                                            sampleAt(r, "drive.torque", t), full, kKinetostaticTolerance * 10,
                                            "oracle: full kinetostatics at (φ, ω, ε)(t); the paper's J_pr ε(t) gives " +
                                                label(paperModel) + " N*m here");
@@ -428,6 +456,55 @@ void dynamicLagCases(const Size& size, const std::string& filter, std::vector<Va
 }
 
 }  // namespace
+
+std::string planetaryGearSizeTag(int size) { return kSizes[size].tag; }
+
+std::vector<double> planetaryGearFig10AccelerationTimes() { return {std::log(4.0 / 3.0), 0.3, 0.4, 1.0, 3.0, 4.6}; }
+
+std::string planetaryGearFig10TorqueQuantity(double tp) { return "M(t_p = " + label(tp) + " s)"; }
+
+std::string planetaryGearFig10RatioQuantity(double tp) { return "M(t_p)/M(∞) at t_p = " + label(tp) + " s"; }
+
+std::vector<double> planetaryGearStartHistoryTimes() { return {0.1, 0.5, 1.0, 2.0, 3.0, 5.0}; }
+
+std::string planetaryGearStartHistoryQuantity(double t) { return "M(t = " + label(t) + " s) of the start, f = 0"; }
+
+PlanetaryGearCurves calcPlanetaryGearCurves(int sizeIndex, int points) {
+    const Size& size = kSizes[sizeIndex];
+    const oc::PlanetaryGearOracle oracle(oracleParameters(size, 0));
+    PlanetaryGearCurves c;
+    c.steadyRate = steadyRate(size);
+    for (int k = 0; k <= points; ++k) {
+        const double u = double(k) / points;
+        const double tp = 0.25 * std::pow(6.0 / 0.25, u);  // log-spaced: the curve's knee is at small t_p
+        c.accelerationTime.push_back(tp);
+        c.torqueRatio.push_back(oc::PlanetaryGearOracle::calcInitialTorqueRatio(tp, 1.0));
+        const double t = 5.0 * u;
+        c.time.push_back(t);
+        c.torqueFull.push_back(oracle.calcStartTorqueHistory(c.steadyRate, kAccelerationTime, t,
+                                                             oc::StartTorqueModel::kRigidChargeKinetostatics));
+        c.torquePaper.push_back(oracle.calcStartTorqueHistory(c.steadyRate, kAccelerationTime, t,
+                                                              oc::StartTorqueModel::kPaperTangentialInertia));
+        oc::PlanetaryGearParameters p = oracleParameters(size, 0);
+        p.lagAngle = M_PI / 2 * u;
+        c.lagDeg.push_back(90 * u);
+        c.holdingTorque.push_back(oc::PlanetaryGearOracle(p)
+                                      .calcSteadyStateLoads(c.steadyRate, 0.0, oc::ChargeMotion::kHeldInCarrierFrame)
+                                      .driveTorque);
+    }
+    return c;
+}
+
+void simulatePlanetaryGearStart(int sizeIndex, double interval, std::vector<double>& time,
+                                std::vector<double>& torque) {
+    const AnalysisResult r = runStart(kSizes[sizeIndex], interval);
+    time.clear();
+    torque.clear();
+    for (std::size_t k = 0; k < r.rows.size(); ++k) {
+        time.push_back(r.rows[k][0]);
+        torque.push_back(at(r, k, "drive.torque"));
+    }
+}
 
 std::vector<ValidationRow> planetaryGearCases(const std::string& filter) {
     std::vector<ValidationRow> rows;

@@ -1,10 +1,13 @@
 #include "validation/cases/ValidationCases.h"
 
+#include <cstdio>
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
+#include <mutex>
 #include <sstream>
 
 namespace milldyn {
@@ -24,10 +27,35 @@ ValidationRow compareRow(std::string caseName, std::string quantity, std::string
     return r;
 }
 
+std::string formatExact(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+namespace {
+std::mutex g_pluginGroupsMutex;
+std::vector<CaseGroup>& pluginGroups() {
+    static std::vector<CaseGroup> groups;
+    return groups;
+}
+}  // namespace
+
+void addValidationCaseGroup(CaseGroup group) {
+    const std::lock_guard<std::mutex> lock(g_pluginGroupsMutex);
+    pluginGroups().push_back(std::move(group));
+}
+
 std::vector<ValidationRow> runValidationCases(const std::string& filter) {
+    std::vector<CaseGroup> groups = {CaseGroup(burrMillCases), CaseGroup(rollCrusherCases),
+                                     CaseGroup(planetaryGearCases), CaseGroup(planetaryBeltCases),
+                                     CaseGroup(beadMillCases)};
+    {
+        const std::lock_guard<std::mutex> lock(g_pluginGroupsMutex);
+        groups.insert(groups.end(), pluginGroups().begin(), pluginGroups().end());
+    }
     std::vector<ValidationRow> all;
-    for (const CaseGroup& group : {CaseGroup(burrMillCases), CaseGroup(rollCrusherCases), CaseGroup(planetaryGearCases),
-                                     CaseGroup(planetaryBeltCases)}) {
+    for (const CaseGroup& group : groups) {
         auto rows = group(filter);
         all.insert(all.end(), rows.begin(), rows.end());
     }

@@ -30,13 +30,22 @@ ValidationRow compareRow(std::string caseName, std::string quantity, std::string
 /// A group of cases (one machine); `filter` selects case names containing it.
 using CaseGroup = std::function<std::vector<ValidationRow>(const std::string& filter)>;
 
-/// Runs every case whose name contains `filter` (all when empty).
+/// Runs every case whose name contains `filter` (all when empty): the
+/// built-in groups, then those plugins added.
 std::vector<ValidationRow> runValidationCases(const std::string& filter);
+
+/// Adds a group of cases from a plugin library, so that
+/// `milldyn validate --plugin lib.so` runs them too (docs/new-layout.md).
+void addValidationCaseGroup(CaseGroup group);
 
 /// The JSON array `validate --json` prints.
 std::string formatValidationJson(const std::vector<ValidationRow>& rows);
 /// A table for people.
 std::string formatValidationTable(const std::vector<ValidationRow>& rows);
+
+/// `v` with every digit a double holds (%.17g), for --set overrides that
+/// must reach the model exactly.
+std::string formatExact(double v);
 
 /// Where the shipped model files are: $MILLDYN_MODELS, else the source tree's models/.
 std::string modelsDirectory();
@@ -45,5 +54,6 @@ std::vector<ValidationRow> burrMillCases(const std::string& filter);
 std::vector<ValidationRow> rollCrusherCases(const std::string& filter);
 std::vector<ValidationRow> planetaryGearCases(const std::string& filter);
 std::vector<ValidationRow> planetaryBeltCases(const std::string& filter);
+std::vector<ValidationRow> beadMillCases(const std::string& filter);
 
 }  // namespace milldyn

@@ -34,6 +34,8 @@ struct ReportPlot {
     std::string caption;  ///< what to look at, shown under the image
     std::string xLabel, yLabel;
     bool logX = false, logY = false;
+    /// One unit on x is as long as one on y (a polar curve drawn as x = r cos φ, y = r sin φ).
+    bool equalAxes = false;
     /// Non-empty: x tick labels at x = 1, 2, ... (e.g. body names).
     std::vector<std::string> xTicLabels;
     /// Non-empty: a clustered bar chart, one cluster per category, one bar per series.
@@ -73,6 +75,9 @@ std::vector<ReportSection> reportSections();
 /// The sections of each machine (one function per machine, next to its cases).
 ReportSection burrMillReportSection();
 ReportSection rollCrusherReportSection();
+ReportSection planetaryGearReportSection();
+ReportSection planetaryBeltReportSection();
+ReportSection beadMillReportSection();
 
 /// Helpers for sections: the row of `caseName` whose quantity is exactly
 /// `quantity`, or null.

@@ -10,7 +10,8 @@
 namespace milldyn {
 
 std::vector<ReportSection> reportSections() {
-    return {burrMillReportSection(), rollCrusherReportSection()};
+    return {burrMillReportSection(), rollCrusherReportSection(), planetaryGearReportSection(),
+            planetaryBeltReportSection(), beadMillReportSection()};
 }
 
 const ValidationRow* findRow(const std::vector<ValidationRow>& rows, const std::string& caseName,

@@ -187,6 +187,7 @@ std::string plotCommands(const ReportPlot& p) {
       << "set datafile missing '?'\n";
     if (p.logX) s << "set logscale x\n";
     if (p.logY) s << "set logscale y\n";
+    if (p.equalAxes) s << "set size ratio -1\n";
     if (!p.xTicLabels.empty()) {
         s << "set xtics (";
         for (std::size_t i = 0; i < p.xTicLabels.size(); ++i)
