@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The error-cost front of every shipped transient scene (issue #7, part 1),
 # on demand, never a test:
-#   bench/front.sh [SCENE...]     scenes: burr roll planetary_gear planetary_belt (default: all)
+#   bench/front.sh [SCENE...]     scenes: burr roll planetary_gear planetary_belt (default: all),
+#                                 planetary_gear_iterated (on request: slow)
 # Writes bench/results/front_SCENE.csv (one row per run) and regenerates
 # docs/speed-accuracy.md's tables and docs/images/front_SCENE.png
 # (bench/front_report.py). Each run is stopped after BUDGET wall seconds
@@ -21,6 +22,8 @@ scenes=("$@")
 # trimmed where a scene is slow (said in docs/speed-accuracy.md).
 ALL_ACC=1e-2,1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10
 SLOW_ACC=1e-2,1e-4,1e-6,1e-8,1e-10
+# The journal-reaction mode of the planetary gear's three JournalFrictions.
+reaction() { echo "elements.friction_A.reaction=$1;elements.friction_B1.reaction=$1;elements.friction_B2.reaction=$1"; }
 for scene in "${scenes[@]}"; do
   out=bench/results/front_$scene.csv
   echo "front of $scene -> $out (load: $(cut -d' ' -f1-3 /proc/loadavg))" >&2
@@ -41,11 +44,17 @@ for scene in "${scenes[@]}"; do
       "$BUILD"/bench_front models/planetary_gear_100x200.yaml --budget "$BUDGET" \
         --set use_scenario=start --set "scenarios.start.end_time=1 s" --set outputs.plots=false \
         --columns drive.torque,friction_A.torque,friction_B1.torque \
-        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10;integrator.max_step=1e-5 s" \
-        --variant "lagged:" \
-        --variant "iterated:elements.friction_A.reaction=iterated;elements.friction_B1.reaction=iterated;elements.friction_B2.reaction=iterated" \
-        --variant "lagged_max1e-4:integrator.max_step=1e-4 s" \
-        --variant "iterated_max1e-4:integrator.max_step=1e-4 s;elements.friction_A.reaction=iterated;elements.friction_B1.reaction=iterated;elements.friction_B2.reaction=iterated" \
+        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10;integrator.max_step=1e-5 s;$(reaction lagged)" \
+        --variant "extrapolated:$(reaction extrapolated)" --variant "lagged:$(reaction lagged)" \
+        --variant "lagged_max1e-4:integrator.max_step=1e-4 s;$(reaction lagged)" \
+        --accuracies $SLOW_ACC > "$out" ;;
+    planetary_gear_iterated)  # iterated reactions (CPodes with them: minutes per run, see docs)
+      "$BUILD"/bench_front models/planetary_gear_100x200.yaml --budget "$BUDGET" \
+        --set use_scenario=start --set "scenarios.start.end_time=1 s" --set outputs.plots=false \
+        --columns drive.torque,friction_A.torque,friction_B1.torque \
+        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10;integrator.max_step=1e-5 s;$(reaction lagged)" \
+        --variant "iterated:$(reaction iterated)" \
+        --variant "iterated_max1e-4:integrator.max_step=1e-4 s;$(reaction iterated)" \
         --accuracies $SLOW_ACC > "$out" ;;
     planetary_belt)  # elastic-belt start, trimmed to its first 2 s
       "$BUILD"/bench_front models/planetary_belt_200x1000.yaml --budget "$BUDGET" \

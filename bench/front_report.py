@@ -10,6 +10,8 @@ SCENES = [  # (scene, title, what the error compares)
      "motor speed and reducer torque vs the 10-mass level, RungeKuttaMerson 1e-10"),
     ("planetary_gear", "Planetary gear mill 100x200, start (first 1 s of the 5 s scenario)",
      "drive torque, friction torque at A and B1 vs lagged, max_step 1e-5 s, RungeKuttaMerson 1e-10"),
+    ("planetary_gear_iterated", "Planetary gear mill 100x200, start (1 s): lagged and iterated reactions (first run, before main's extrapolated mode)",
+     "drive torque, friction torque at A and B1 vs lagged, max_step 1e-5 s, RungeKuttaMerson 1e-10"),
     ("planetary_belt", "Planetary belt mill 200x1000, elastic-belt start (first 2 s of 8 s)",
      "carrier drive torque and tight-side tension vs RungeKuttaMerson 1e-10"),
 ]
