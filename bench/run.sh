@@ -24,3 +24,11 @@ build/bench_odeint_burr "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/scipy_burr.py "$tol" 3 >> "$out"
 build/bench_milldyn_burr "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/report.py "$out"
+# The roll crusher 2-mass level, rows in phase (bench/roll_equations.h).
+cmake --build build -j"$(nproc)" --target bench_odeint_roll bench_milldyn_roll
+out=$(mktemp)
+build/bench_odeint_roll 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
+build/bench_odeint_roll "$tol" "$repeats" >> "$out"
+/usr/bin/python3 bench/scipy_roll.py "$tol" 3 >> "$out"
+build/bench_milldyn_roll "$tol" "$repeats" >> "$out"
+/usr/bin/python3 bench/report.py "$out" "motor speed (2.5, 5, 10 s)"

@@ -30,6 +30,8 @@ const char* kUsage =
     "usage:\n"
     "  milldyn run MODEL.yaml [--out DIR] [--set path=value]... [--scenario NAME]\n"
     "                         [--integrator NAME] [--accuracy TOL] [--end-time T] [--quiet]\n"
+    "                         [--preset fast|balanced|accurate]  (the model's presets:; --set and\n"
+    "                         --integrator/--accuracy still win over the preset's choices)\n"
     "                         [--schematic [--schematic-at t1,t2,...]]   (2-D pictures, docs/schematic.md)\n"
     "  milldyn info MODEL.yaml [--set path=value]...\n"
     "  milldyn validate [--filter TEXT] [--json] [--report DIR]\n"
@@ -91,6 +93,7 @@ Arguments parseArguments(const std::vector<std::string>& args) {
         else if (arg == "--accuracy") a.overrides.push_back({"integrator.accuracy", value(i)});
         else if (arg == "--end-time") a.overrides.push_back({"scenario.end_time", value(i)});
         else if (arg == "--scenario") a.overrides.push_back({"use_scenario", value(i)});
+        else if (arg == "--preset") a.overrides.push_back({"preset", value(i)});
         else if (arg == "--filter") a.filter = value(i);
         else if (arg == "--report") a.reportDir = value(i);
         else if (arg == "--grid") a.grids.push_back(value(i));
@@ -177,7 +180,16 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
         observer = [&](const Scene& scene, const SimTK::State& s, double key) { recorder->observe(scene, s, key); };
     }
     const auto start = std::chrono::steady_clock::now();
-    const AnalysisResult result = runAnalysis(spec, progress, observer);
+    AnalysisResult result = runAnalysis(spec, progress, observer);
+    // What the preset picked, in the printed summary and summary.json.
+    if (!spec.preset.empty()) {
+        std::ostringstream picked;
+        picked << "preset " << spec.preset << ": " << spec.integrator.name << " " << spec.integrator.accuracy;
+        if (spec.integrator.maxStep > 0) picked << ", max_step " << spec.integrator.maxStep << " s";
+        if (!spec.fidelity.empty()) picked << ", fidelity " << spec.fidelity;
+        picked << " (" << spec.presetWhy << ")";
+        result.notes.insert(result.notes.begin(), picked.str());
+    }
     if (showProgress) err << "\r" << std::string(40, ' ') << "\r";
     RunInfo info;
     info.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -225,7 +237,17 @@ int commandInfo(const Arguments& a, std::ostream& out) {
         out << "  body " << b.name << ": pin on " << b.joint.parent << ", inertia " << b.inertia << " kg*m^2\n";
     for (const auto& e : spec.elements) out << "  element " << e.name << ": " << e.type << "\n";
     out << "  scenario: " << spec.scenario.type << ", integrator " << spec.integrator.name << " at accuracy "
-        << spec.integrator.accuracy << "\n  built:\n";
+        << spec.integrator.accuracy;
+    if (spec.integrator.maxStep > 0) out << ", max_step " << spec.integrator.maxStep << " s";
+    if (!spec.fidelity.empty()) out << ", fidelity " << spec.fidelity;
+    out << "\n";
+    if (!spec.presetNames.empty()) {
+        out << "  presets:";
+        for (const auto& p : spec.presetNames) out << " " << p;
+        out << "\n";
+    }
+    if (!spec.preset.empty()) out << "  preset " << spec.preset << ": " << spec.presetWhy << "\n";
+    out << "  built:\n";
     for (const auto& n : scene->notes()) out << "    " << n.what << " — " << n.why << "\n";
     out << "  outputs:";
     for (const auto& p : scene->probes()) out << " " << p.name << "[" << p.unit << "]";

@@ -71,12 +71,19 @@ public:
         requireMap(root, "<document>");
         std::vector<OpenFile> open{{canonicalPath(m_file), m_file}};
         resolveIncludes(root, open);  // first: --set reaches included values too
-        for (const auto& o : overrides) applyOverride(root, o);
-
+        // The preset's settings first, every other --set after them: an
+        // explicit --integrator or --set wins over the preset's choice.
+        auto isPresetPath = [](const Override& o) { return o.path == "preset" || o.path.rfind("presets.", 0) == 0; };
+        for (const auto& o : overrides)
+            if (isPresetPath(o)) applyOverride(root, o);
         ModelSpec spec;
+        applyPreset(root, spec);
+        for (const auto& o : overrides)
+            if (!isPresetPath(o)) applyOverride(root, o);
+
         spec.file = m_file;
         checkKeys(root, "", {"format_version", "name", "description", "fidelity", "bodies", "elements",
-                             "scenario", "scenarios", "use_scenario", "integrator", "outputs",
+                             "scenario", "scenarios", "use_scenario", "integrator", "outputs", "presets", "preset",
                              "gravity", "include" /* resolved and removed above; listed for "did you mean" */});
         const YAML::Node version = required(root, "format_version", "");
         const double versionNumber = readNumber(version, "format_version", "1");
@@ -339,6 +346,42 @@ private:
         const YAML::Node level = required(n, "level", "fidelity.");
         spec.fidelity = scalar(level, "fidelity.level");
         checkLevel(level, "fidelity.level", spec.fidelity, spec);
+    }
+
+    /// `presets: {NAME: {why: TEXT, set: {path: value, ...}}}` and the one
+    /// `preset:` (or --preset) selects: its settings are applied as if
+    /// written in the file (diagnostics point at the preset's lines).
+    void applyPreset(YAML::Node root, ModelSpec& spec) {
+        const YAML::Node all = root["presets"];
+        if (all) {
+            requireMap(all, "presets");
+            for (auto it = all.begin(); it != all.end(); ++it) {
+                const std::string name = scalar(it->first, "presets");
+                const std::string prefix = "presets." + name + ".";
+                requireMap(it->second, "presets." + name);
+                checkKeys(it->second, prefix, {"why", "set"});
+                scalar(required(it->second, "why", prefix), prefix + "why");
+                requireMap(required(it->second, "set", prefix), prefix + "set");
+                spec.presetNames.push_back(name);
+            }
+        }
+        const YAML::Node selected = root["preset"];
+        if (!selected) return;
+        const std::string name = scalar(selected, "preset");
+        if (!all) throw error(selected, "preset", "unknown preset '" + name + "': the model defines no presets: block");
+        if (std::find(spec.presetNames.begin(), spec.presetNames.end(), name) == spec.presetNames.end())
+            throw error(selected, "preset", "unknown preset '" + name + "' (expected one of " +
+                                                joinWords(spec.presetNames) + ")" + didYouMean(name, spec.presetNames));
+        const YAML::Node chosen = all[name];
+        const YAML::Node settings = chosen["set"];
+        for (auto it = settings.begin(); it != settings.end(); ++it) {
+            const std::string path = scalar(it->first, "presets." + name + ".set");
+            const YAML::Node value = it->second;
+            scalar(value, "presets." + name + ".set." + path);
+            setValue(root, path, &value, "", where(value));
+        }
+        spec.preset = name;
+        spec.presetWhy = chosen["why"].Scalar();
     }
 
     void checkLevel(const YAML::Node& n, const std::string& key, const std::string& level, const ModelSpec& spec) const {

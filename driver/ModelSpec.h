@@ -72,6 +72,11 @@ struct ModelSpec {
     ElementSpec scenario;
     IntegratorSpec integrator;
     OutputSpec outputs;
+    /// The model's presets (`presets:`), the one applied (`preset:` or
+    /// --preset; empty: none) and why it was chosen (its `why:`).
+    std::vector<std::string> presetNames;
+    std::string preset;
+    std::string presetWhy;
 
     const BodySpec* findBody(const std::string& name) const;
     const ElementSpec* findElement(const std::string& name) const;

@@ -76,6 +76,10 @@ void Simulation::initialize(const SimTK::State& start) {
 
 const SimTK::State& Simulation::state() const { return m_integrator->getState(); }
 
+const SimTK::State& Simulation::lastSample() const {
+    return m_lastSampleIsCrossing ? m_crossingSample : m_integrator->getState();
+}
+
 void Simulation::accumulateStatistics() {
     m_extra.steps += m_integrator->getNumStepsTaken();
     m_extra.realizations += m_integrator->getNumRealizations();
@@ -113,9 +117,12 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
     const SimTK::System& system = m_scene.system();
     const double t0 = integ.getTime();
 
+    // The last sample is the integrator's state (no copy) unless it was a
+    // located crossing; copying a State costs more than a step here.
     auto emit = [&](const SimTK::State& s) {
         system.realize(s, SimTK::Stage::Acceleration);
         checkFinite(s);
+        m_lastSampleIsCrossing = false;
         if (onSample) onSample(s);
     };
     emit(integ.getState());
@@ -128,6 +135,8 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
     std::size_t nextSwitch = 0;
 
     long sampleIndex = 1;
+    // The last accepted step end: only a watch needs it (a crossing is
+    // located from it), so only a watched run pays for the copy.
     SimTK::State lastStepEnd = integ.getState();
     auto watched = [watch](const SimTK::State& st) { return watch->value(st) - watch->threshold; };
     double lastWatch = watch ? watched(lastStepEnd) : 0;
@@ -148,8 +157,10 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         if (watch && s.getTime() >= watch->notBefore) {
             const double value = watched(s);
             if (lastWatch > 0 && value <= 0) {
-                const SimTK::State crossing = locateCrossing(lastStepEnd, s.getTime(), *watch);
+                m_crossingSample = locateCrossing(lastStepEnd, s.getTime(), *watch);
+                const SimTK::State& crossing = m_crossingSample;
                 emit(crossing);
+                m_lastSampleIsCrossing = true;
                 const double rate = watch->rate(crossing);
                 if (!(rate < 0))
                     throw AnalysisError(watch->what + ": not falling at " + timeText(crossing.getTime()));
@@ -158,8 +169,8 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             if (!integ.isStateInterpolated()) lastWatch = value;
         }
         if (!integ.isStateInterpolated()) {
-            lastStepEnd = s;
-            if (makeLaggedValuesConsistent()) lastStepEnd = integ.getState();
+            makeLaggedValuesConsistent();  // may restart: s then is the consistent state
+            if (watch) lastStepEnd = integ.getState();
         }
 
         const double t = s.getTime();
@@ -181,8 +192,10 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             accumulateStatistics();
             integ.initialize(restart);
             integ.resetAllStatistics();
-            lastStepEnd = integ.getState();
-            if (watch) lastWatch = watched(lastStepEnd);
+            if (watch) {
+                lastStepEnd = integ.getState();
+                lastWatch = watched(lastStepEnd);
+            }
         }
         if (status == SimTK::Integrator::EndOfSimulation) return std::nullopt;
     }

@@ -69,6 +69,9 @@ public:
                               const Watch* watch = nullptr);
 
     const SimTK::State& state() const;
+    /// The state of the last onSample call of the last run() (realized to
+    /// Acceleration): the end, or the located crossing of a watch.
+    const SimTK::State& lastSample() const;
     RunStatistics statistics() const;
 
 private:
@@ -76,6 +79,8 @@ private:
     IntegratorSpec m_settings;
     std::unique_ptr<SimTK::Integrator> m_integrator;
     RunStatistics m_extra;  // work done by crossing searches
+    SimTK::State m_crossingSample;
+    bool m_lastSampleIsCrossing = false;
 
     void checkFinite(const SimTK::State& state) const;
     /// Iterates the scene's each-step lagged values (iterated journal

@@ -33,10 +33,14 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     Simulation sim(*scene, spec.integrator);
     sim.initialize(state);
     const SimTK::State first = sim.state();
-    SimTK::State last = first;
 
     // Summary at the last sample before the first switch-off: steady running.
+    // Samples fall on multiples of the interval and on the switch, so that
+    // sample is within one interval of it; only those are copied (a State
+    // copy costs more than an integration step), the end is sim.lastSample().
     SimTK::State steady = state;
+    bool steadyCopied = false;
+    const double copyFrom = switchTime - 1.5 * spec.outputs.sampleInterval;
     double peakDrive = 0;
     std::vector<double> peakCoupling(scene->probes().size(), 0.0);
     auto onSample = [&](const SimTK::State& s) {
@@ -46,8 +50,10 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             scene->system().realize(drawn, SimTK::Stage::Acceleration);
             observer(*scene, drawn, s.getTime());
         }
-        last = s;
-        if (s.getTime() <= switchTime) steady = s;
+        if (s.getTime() <= switchTime && s.getTime() > copyFrom) {
+            steady = s;
+            steadyCopied = true;
+        }
         peakDrive = std::max(peakDrive, std::abs(sumProbes(*scene, s, ProbeRole::DriveTorque)));
         for (std::size_t i = 0; i < scene->probes().size(); ++i)
             if (scene->probes()[i].role == ProbeRole::CouplingTorque)
@@ -65,6 +71,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         sim.run(endTime, spec.outputs.sampleInterval, onSample);
     }
     result.statistics = sim.statistics();
+    const SimTK::State last = sim.lastSample();
+    if (!steadyCopied && !(switchTime < sim.lastSample().getTime())) steady = last;
 
     scene->system().realize(steady, SimTK::Stage::Acceleration);
     const double omega = pinSpeed(steady, speedBody.mobod);

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# The error-cost front of every shipped transient scene (issue #7, part 1),
+# on demand, never a test:
+#   bench/front.sh [SCENE...]     scenes: burr roll planetary_gear planetary_belt (default: all),
+#                                 planetary_gear_iterated (on request: slow)
+# Writes bench/results/front_SCENE.csv (one row per run) and regenerates
+# docs/speed-accuracy.md's tables and docs/images/front_SCENE.png
+# (bench/front_report.py). Each run is stopped after BUDGET wall seconds
+# (default 2) and that integrator's tighter accuracies are skipped.
+# A new machine (the bead mill) adds one case below and one entry in
+# bench/front_report.py's SCENES.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUDGET=${BUDGET:-2}
+BUILD=${BUILD:-build}
+cmake -S . -B "$BUILD" -DMILLDYN_BENCH=ON >/dev/null
+cmake --build "$BUILD" -j2 --target bench_front >/dev/null
+mkdir -p bench/results
+scenes=("$@")
+[ ${#scenes[@]} -gt 0 ] || scenes=(burr roll planetary_gear planetary_belt)
+# Integrators and accuracies: all (CPodesAdams too) at 1e-2 ... 1e-10,
+# trimmed where a scene is slow (said in docs/speed-accuracy.md).
+ALL_ACC=1e-2,1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10
+SLOW_ACC=1e-2,1e-4,1e-6,1e-8,1e-10
+# The journal-reaction mode of the planetary gear's three JournalFrictions.
+reaction() { echo "elements.friction_A.reaction=$1;elements.friction_B1.reaction=$1;elements.friction_B2.reaction=$1"; }
+for scene in "${scenes[@]}"; do
+  out=bench/results/front_$scene.csv
+  echo "front of $scene -> $out (load: $(cut -d' ' -f1-3 /proc/loadavg))" >&2
+  case $scene in
+    burr)  # the MMP-50 5.5 kW start to steady running, 4 s (switch-off moved out)
+      "$BUILD"/bench_front models/burr_mill_5p5kW_idle.yaml --budget "$BUDGET" \
+        --set "scenario.end_time=4 s" --set "elements.motor.switch_off_time=100 s" --set outputs.plots=false \
+        --columns motor_shaft.speed,millstone.speed,belt.torque \
+        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-11" \
+        --accuracies $ALL_ACC > "$out" ;;
+    roll)  # 10 s of crushing from steady running; 2-mass vs 10-mass
+      "$BUILD"/bench_front models/roll_crusher.yaml --budget "$BUDGET" --set outputs.plots=false \
+        --columns motor.speed,reducer.torque \
+        --ref "fidelity.level=10-mass;integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10" \
+        --variant "10-mass:fidelity.level=10-mass" --variant "2-mass:fidelity.level=2-mass" \
+        --accuracies $ALL_ACC > "$out" ;;
+    planetary_gear)  # the start, trimmed to its first 1 s (the torque peak)
+      "$BUILD"/bench_front models/planetary_gear_100x200.yaml --budget "$BUDGET" \
+        --set use_scenario=start --set "scenarios.start.end_time=1 s" --set outputs.plots=false \
+        --columns drive.torque,friction_A.torque,friction_B1.torque \
+        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10;integrator.max_step=1e-5 s;$(reaction lagged)" \
+        --variant "extrapolated:$(reaction extrapolated)" --variant "lagged:$(reaction lagged)" \
+        --variant "lagged_max1e-4:integrator.max_step=1e-4 s;$(reaction lagged)" \
+        --accuracies $SLOW_ACC > "$out" ;;
+    planetary_gear_iterated)  # iterated reactions (CPodes with them: minutes per run, see docs)
+      "$BUILD"/bench_front models/planetary_gear_100x200.yaml --budget "$BUDGET" \
+        --set use_scenario=start --set "scenarios.start.end_time=1 s" --set outputs.plots=false \
+        --columns drive.torque,friction_A.torque,friction_B1.torque \
+        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10;integrator.max_step=1e-5 s;$(reaction lagged)" \
+        --variant "iterated:$(reaction iterated)" \
+        --variant "iterated_max1e-4:integrator.max_step=1e-4 s;$(reaction iterated)" \
+        --accuracies $SLOW_ACC > "$out" ;;
+    planetary_belt)  # elastic-belt start, trimmed to its first 2 s
+      "$BUILD"/bench_front models/planetary_belt_200x1000.yaml --budget "$BUDGET" \
+        --set fidelity.level=elastic --set use_scenario=start --set "scenarios.start.end_time=2 s" \
+        --set outputs.plots=false \
+        --columns drive.torque,belt1.tension_tight \
+        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10" \
+        --variant "elastic:" --accuracies $SLOW_ACC > "$out" ;;
+    *) echo "unknown scene $scene" >&2; exit 2 ;;
+  esac
+done
+/usr/bin/python3 bench/front_report.py
