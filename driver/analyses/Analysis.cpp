@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
 namespace milldyn {
 
@@ -15,6 +16,18 @@ const ResultScalar* AnalysisResult::find(const std::string& name) const {
     for (const auto& r : results)
         if (r.name == name) return &r;
     return nullptr;
+}
+
+std::size_t AnalysisResult::findColumn(const std::string& name) const {
+    for (std::size_t i = 0; i < columnNames.size(); ++i)
+        if (columnNames[i] == name) return i;
+    return std::numeric_limits<std::size_t>::max();
+}
+
+double AnalysisResult::value(std::size_t row, const std::string& name) const {
+    const std::size_t c = findColumn(name);
+    if (c == std::numeric_limits<std::size_t>::max()) throw std::runtime_error(tableName + " table has no column " + name);
+    return rows.at(row)[c];
 }
 
 namespace {
@@ -334,10 +347,6 @@ void SampleTable::record(const SimTK::State& s) {
     m_result.rows.push_back(std::move(row));
 }
 
-std::size_t SampleTable::column(const std::string& name) const {
-    for (std::size_t i = 0; i < m_result.columnNames.size(); ++i)
-        if (m_result.columnNames[i] == name) return i;
-    return std::numeric_limits<std::size_t>::max();
-}
+std::size_t SampleTable::column(const std::string& name) const { return m_result.findColumn(name); }
 
 }  // namespace milldyn

@@ -55,6 +55,11 @@ struct AnalysisResult {
     std::vector<NamedMatrix> matrices;
 
     const ResultScalar* find(const std::string& name) const;
+    /// Index of the main table's column `name`, or npos.
+    std::size_t findColumn(const std::string& name) const;
+    /// The main table's value in row `row`, column `name`; throws
+    /// std::runtime_error naming the column if there is none.
+    double value(std::size_t row, const std::string& name) const;
 };
 
 /// The reader that knows every registered element type and analysis kind.

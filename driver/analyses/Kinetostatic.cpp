@@ -118,17 +118,12 @@ AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress
     }
     result.statistics.realizations = iterations;
 
-    auto column = [&](const std::string& name) {
-        for (std::size_t i = 0; i < result.columnNames.size(); ++i)
-            if (result.columnNames[i] == name) return i;
-        return std::numeric_limits<std::size_t>::max();
-    };
     result.results.push_back({"reduced_inertia", result.rows.front()[1], "kg*m^2",
                               "J_pr = 2 KE / ω1² at the first angle"});
     std::vector<std::size_t> torqueColumns, reactionColumns;
     for (std::size_t i = 0; i < scene->probes().size(); ++i) {
         const Probe& p = scene->probes()[i];
-        const std::size_t c = column(p.name);
+        const std::size_t c = result.findColumn(p.name);
         double lo = std::numeric_limits<double>::infinity(), hi = -lo, sum = 0, atMax = 0;
         for (const auto& row : result.rows) {
             if (row[c] > hi) { hi = row[c]; atMax = row[0]; }

@@ -11,6 +11,7 @@
 #include "validation/oracles/BurrMillOracle.h"
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace milldyn {
@@ -50,9 +51,9 @@ std::vector<Override> linearMotorOverrides(const oc::PrintedMotor& m) {
 }
 
 double column(const AnalysisResult& r, const std::vector<double>& row, const std::string& name) {
-    for (std::size_t i = 0; i < r.columnNames.size(); ++i)
-        if (r.columnNames[i] == name) return row[i];
-    throw std::runtime_error("no column " + name);
+    const std::size_t c = r.findColumn(name);
+    if (c == std::numeric_limits<std::size_t>::max()) throw std::runtime_error("no column " + name);
+    return row[c];
 }
 
 double resultValue(const AnalysisResult& r, const std::string& name) {

@@ -131,17 +131,11 @@ ModelSpec modelFor(const BeltCase& c, const std::string& level, std::vector<Over
     return readModelText(t, modelsDirectory() + kModel, defaultModelReader(), o);
 }
 
-double at(const AnalysisResult& r, std::size_t row, const std::string& name) {
-    for (std::size_t i = 0; i < r.columnNames.size(); ++i)
-        if (r.columnNames[i] == name) return r.rows.at(row)[i];
-    throw std::runtime_error("kinetostatic table has no column " + name);
-}
-
 /// The axle's force on drum 1 in the carrier frame (x along O→A) at row k.
 Eigen::Vector2d drumReaction(const AnalysisResult& r, std::size_t k) {
-    const double phi = at(r, k, "carrier_angle");
-    const double gx = at(r, k, "reaction_A1.on_drum1_at_axis_x_ground");
-    const double gy = at(r, k, "reaction_A1.on_drum1_at_axis_y_ground");
+    const double phi = r.value(k, "carrier_angle");
+    const double gx = r.value(k, "reaction_A1.on_drum1_at_axis_x_ground");
+    const double gy = r.value(k, "reaction_A1.on_drum1_at_axis_y_ground");
     return {gx * std::cos(phi) + gy * std::sin(phi), -gx * std::sin(phi) + gy * std::cos(phi)};
 }
 
@@ -176,12 +170,12 @@ TurnComparison compareTurn(const BeltCase& c, int points, const std::string& lev
     const AnalysisResult r = runAnalysis(modelFor(c, level, {{"scenario.angle_points", std::to_string(points)}}));
     TurnComparison t;
     for (int k = 0; k < points; ++k) {
-        const double phi = at(r, k, "carrier_angle");
+        const double phi = r.value(k, "carrier_angle");
         const oc::RebuiltReaction o = oracle.calcRebuiltReaction(phi, oc::ChargeInertia::SteadyCentroid);
         const Eigen::Vector2d f = drumReaction(r, k);
         t.worstReaction = std::max(t.worstReaction, (f - Eigen::Vector2d(o.forceX, o.forceY)).norm() / o.rA);
         if (level == "paper") {
-            const double tight = at(r, k, "belt1.tension_tight"), slack = at(r, k, "belt1.tension_slack");
+            const double tight = r.value(k, "belt1.tension_tight"), slack = r.value(k, "belt1.tension_slack");
             t.worstTension = std::max({t.worstTension, std::abs(tight - o.tightTension) / o.tightTension,
                                        std::abs(slack - o.slackTension) / o.tightTension});
         }
@@ -273,7 +267,7 @@ void paperFormCases(const std::string& filter, std::vector<ValidationRow>& rows)
             // (16)–(17): X_A = −F_x, Y_A = F_y.
             const Eigen::Vector2d f = drumReaction(r, 0);
             worst = std::max(worst, std::hypot(-f.x() - p.xA, f.y() - p.yA) / p.rA);
-            const double slack = at(r, 0, "belt1.tension_slack");
+            const double slack = r.value(0, "belt1.tension_slack");
             worstT = std::max(worstT, std::abs(slack - std::abs(p.slackTension)) /
                                           std::max(std::abs(p.tightTension), 1e-3 * p.rA));
         }
@@ -289,7 +283,7 @@ void paperFormCases(const std::string& filter, std::vector<ValidationRow>& rows)
         c.moment = oc::MomentForceReading::RelativeCharge;
         const oc::PlanetaryBeltOracle literal(oracleParameters(c));
         const AnalysisResult r = weldedInstant(c, 3 * M_PI / 2);
-        rows.push_back(info(name, "T2 at φ = 270°, model vs (15) with Φ_r", "N", at(r, 0, "belt1.tension_slack"),
+        rows.push_back(info(name, "T2 at φ = 270°, model vs (15) with Φ_r", "N", r.value(0, "belt1.tension_slack"),
                             literal.calcPaperReaction(3 * M_PI / 2).slackTension,
                             "Φ_r acts along A→C and has no moment about A; every physical model gives the Φ_c "
                             "moment, so the Φ_r reading cannot be reproduced (and gives T2 < 0 on part of the turn)"));
@@ -310,20 +304,20 @@ void cToOneCases(const std::string& filter, std::vector<ValidationRow>& rows) {
         rows.push_back(judged(name, tag + ": max R_A error over 13 angles (vector)", "1", t.worstReaction, 0.0,
                               t.worstReaction, "held charge, rigid belt; finite for every c"));
         const AnalysisResult r = runAnalysis(modelFor(c, "paper", {{"scenario.angle_points", "1"}}));
-        const double omega = at(r, 0, "belt1.drum_absolute_speed");
+        const double omega = r.value(0, "belt1.drum_absolute_speed");
         const double expected = oracle.getKinematics().drumRate;
         ValidationRow w = compareRow(name, tag + ": drum absolute speed ω = Ω(1 − r0/r_A)", "rad/s", omega, expected,
                                      kTolerance, "absolute error judged against Ω");
         w.relError = std::abs(omega - expected) / c.rate;
         w.status = w.relError <= kTolerance ? "pass" : "fail";
         rows.push_back(w);
-        const double turns = at(r, 0, "belt1.drum_turns");
+        const double turns = r.value(0, "belt1.drum_turns");
         ValidationRow flag = compareRow(name, tag + ": drum_turns flag (0: translates, l_AD = ∞)", "1", turns,
                                         oracle.getKinematics().hasInstantaneousCentre ? 1.0 : 0.0, 0.0);
         flag.relError = std::abs(turns - flag.oracle);
         flag.status = flag.relError == 0 ? "pass" : "fail";
         rows.push_back(flag);
-        const double inv = at(r, 0, "belt1.inverse_centre_offset");
+        const double inv = r.value(0, "belt1.inverse_centre_offset");
         ValidationRow io = compareRow(name, tag + ": 1/l_AD (4), finite form", "1/m", inv,
                                       oracle.getKinematics().inverseCentreOffset, kTolerance,
                                       "absolute error judged against 1/l_OA");
@@ -441,12 +435,12 @@ void elasticCases(const std::string& filter, std::vector<ValidationRow>& rows) {
         runAnalysis(modelFor(c, "elastic_held", {{"scenario.angle_points", std::to_string(points)}}));
     double worstTorque = 0, maxRigid = 0, maxElastic = 0, minSlack = 1e300, maxRatio = 0;
     for (int k = 0; k < points; ++k) {
-        const double a = at(rigid, k, "belt1.drum_torque"), b = at(elastic, k, "belt1.drum_torque");
+        const double a = rigid.value(k, "belt1.drum_torque"), b = elastic.value(k, "belt1.drum_torque");
         worstTorque = std::max(worstTorque, std::abs(a - b) / std::abs(a));
         maxRigid = std::max(maxRigid, drumReaction(rigid, k).norm());
         maxElastic = std::max(maxElastic, drumReaction(elastic, k).norm());
-        minSlack = std::min(minSlack, at(elastic, k, "belt1.tension_slack"));
-        maxRatio = std::max(maxRatio, at(elastic, k, "belt1.tension_tight") / at(elastic, k, "belt1.tension_slack"));
+        minSlack = std::min(minSlack, elastic.value(k, "belt1.tension_slack"));
+        maxRatio = std::max(maxRatio, elastic.value(k, "belt1.tension_tight") / elastic.value(k, "belt1.tension_slack"));
     }
     rows.push_back(judged(name, "max |drum torque elastic − rigid|/rigid over 37 angles", "1", worstTorque, 0.0,
                           worstTorque,
@@ -472,32 +466,32 @@ void startUpCases(const std::string& filter, std::vector<ValidationRow>& rows) {
     double worstDiff = 0, worstTightRatio = 0, minSlack = 1e300, minKinSlack = 1e300, peakSlip = 0;
     const std::size_t n = run.rows.size();
     for (std::size_t k = 0; k < n; ++k) {
-        peakSlip = std::max(peakSlip, std::abs(at(run, k, "belt1.slip_speed")));
-        minSlack = std::min(minSlack, at(run, k, "belt1.tension_slack"));
-        peakR = std::max(peakR, at(run, k, "reaction_A1.on_drum1_at_axis_magnitude"));
-        peakTight = std::max(peakTight, at(run, k, "belt1.tension_tight"));
+        peakSlip = std::max(peakSlip, std::abs(run.value(k, "belt1.slip_speed")));
+        minSlack = std::min(minSlack, run.value(k, "belt1.tension_slack"));
+        peakR = std::max(peakR, run.value(k, "reaction_A1.on_drum1_at_axis_magnitude"));
+        peakTight = std::max(peakTight, run.value(k, "belt1.tension_tight"));
         if (k % 10 != 0) continue;
         const double t = run.rows[k][0];
         const AnalysisResult kin =
             runAnalysis(modelFor(c, "elastic_held",
                                  {{"scenario.angle_points", "1"},
-                                  {"scenario.angle_from", fmt(at(run, k, "carrier.angle"))},
-                                  {"scenario.carrier_speed", fmt(at(run, k, "carrier.speed"))},
+                                  {"scenario.angle_from", fmt(run.value(k, "carrier.angle"))},
+                                  {"scenario.carrier_speed", fmt(run.value(k, "carrier.speed"))},
                                   {"scenario.time", fmt(t)},
-                                  {"elements.charge1.lag", fmt(at(run, k, "charge1.lag"))},
-                                  {"elements.charge2.lag", fmt(at(run, k, "charge2.lag"))}}));
-        const double rDyn = at(run, k, "reaction_A1.on_drum1_at_axis_magnitude");
-        const double rKin = at(kin, 0, "reaction_A1.on_drum1_at_axis_magnitude");
+                                  {"elements.charge1.lag", fmt(run.value(k, "charge1.lag"))},
+                                  {"elements.charge2.lag", fmt(run.value(k, "charge2.lag"))}}));
+        const double rDyn = run.value(k, "reaction_A1.on_drum1_at_axis_magnitude");
+        const double rKin = kin.value(0, "reaction_A1.on_drum1_at_axis_magnitude");
         peakKinR = std::max(peakKinR, rKin);
         worstDiff = std::max(worstDiff, std::abs(rDyn - rKin));
         if (rDyn / rKin > worstRatio) {
             worstRatio = rDyn / rKin;
             tWorst = t;
         }
-        const double tightKin = at(kin, 0, "belt1.tension_tight");
+        const double tightKin = kin.value(0, "belt1.tension_tight");
         peakKinTight = std::max(peakKinTight, tightKin);
-        worstTightRatio = std::max(worstTightRatio, at(run, k, "belt1.tension_tight") / tightKin);
-        minKinSlack = std::min(minKinSlack, at(kin, 0, "belt1.tension_slack"));
+        worstTightRatio = std::max(worstTightRatio, run.value(k, "belt1.tension_tight") / tightKin);
+        minKinSlack = std::min(minKinSlack, kin.value(0, "belt1.tension_slack"));
     }
     for (const ResultScalar& r : run.results)
         if (r.name == "energy_balance_relative")
@@ -527,20 +521,20 @@ void startUpCases(const std::string& filter, std::vector<ValidationRow>& rows) {
                                                       {"elements.belt2.friction_coefficient", "0.22"}}));
     double flatSlip = 0, flatSlack = 1e300, flatFirstSlip = -1;
     for (std::size_t k = 0; k < flat.rows.size(); ++k) {
-        const double v = std::abs(at(flat, k, "belt1.slip_speed"));
+        const double v = std::abs(flat.value(k, "belt1.slip_speed"));
         if (v > 0 && flatFirstSlip < 0) flatFirstSlip = flat.rows[k][0];
         flatSlip = std::max(flatSlip, v);
-        flatSlack = std::min(flatSlack, at(flat, k, "belt1.tension_slack"));
+        flatSlack = std::min(flatSlack, flat.value(k, "belt1.tension_slack"));
     }
-    const double grip = at(flat, 0, "belt1.grip_ratio");
+    const double grip = flat.value(0, "belt1.grip_ratio");
     const std::string flatNote = "flat belt μ = 0.22, grip e^(μθ) = " + num(grip);
     rows.push_back(info(name, "flat belt: peak slip speed (first slip at t = " + num(flatFirstSlip) + " s)", "m/s",
                         flatSlip, 0.0, flatNote));
-    rows.push_back(info(name, "flat belt: accumulated slip at the end", "m", at(flat, flat.rows.size() - 1, "belt1.slip"),
+    rows.push_back(info(name, "flat belt: accumulated slip at the end", "m", flat.value(flat.rows.size() - 1, "belt1.slip"),
                         0.0, flatNote));
     rows.push_back(info(name, "flat belt: smallest slack-span tension", "N", flatSlack, 2 * 24.4e3 / (1 + grip),
                         flatNote + "; oracle column: 2 T0/(1 + e^(μθ)), the floor while slipping"));
-    const double lag = at(run, n - 1, "charge1.lag");
+    const double lag = run.value(n - 1, "charge1.lag");
     rows.push_back(info(name, "settled lag α of the dragged charge", "deg", (M_PI - lag) * 180 / M_PI, 50.0,
                         "oracle column: the 50° the wall drag was chosen for (without gravity)"));
 }
@@ -563,13 +557,13 @@ PlanetaryBeltTurnCurves calcPlanetaryBeltFig3Turn(int points) {
     const AnalysisResult r = runAnalysis(modelFor(c, "paper", {{"scenario.angle_points", std::to_string(points)}}));
     PlanetaryBeltTurnCurves t;
     for (int k = 0; k < points; ++k) {
-        const double phi = at(r, k, "carrier_angle");
+        const double phi = r.value(k, "carrier_angle");
         t.angle.push_back(phi);
         t.model.push_back(drumReaction(r, k).norm());
         t.rebuilt.push_back(oracle.calcRebuiltReaction(phi, oc::ChargeInertia::SteadyCentroid).rA);
         t.paper.push_back(oracle.calcPaperReaction(phi).rA);
-        t.tight.push_back(at(r, k, "belt1.tension_tight"));
-        t.slack.push_back(at(r, k, "belt1.tension_slack"));
+        t.tight.push_back(r.value(k, "belt1.tension_tight"));
+        t.slack.push_back(r.value(k, "belt1.tension_slack"));
     }
     return t;
 }

@@ -88,12 +88,6 @@ AnalysisResult runKinetostatic(const Size& size, std::vector<Override> overrides
     return runAnalysis(spec);
 }
 
-double at(const AnalysisResult& r, std::size_t row, const std::string& name) {
-    for (std::size_t i = 0; i < r.columnNames.size(); ++i)
-        if (r.columnNames[i] == name) return r.rows.at(row)[i];
-    throw std::runtime_error("kinetostatic table has no column " + name);
-}
-
 std::vector<Override> noFriction() {
     return {{"elements.friction_A.friction_coefficient", "0"},
             {"elements.friction_B1.friction_coefficient", "0"},
@@ -116,7 +110,7 @@ void compareReactions(std::vector<ValidationRow>& rows, const std::string& name,
     for (const auto& b : bearings) {
         const std::string col = b.column;
         const double scale = b.oracle.norm();
-        const double x = at(r, row, col + "_x_ground"), y = at(r, row, col + "_y_ground");
+        const double x = r.value(row, col + "_x_ground"), y = r.value(row, col + "_y_ground");
         ValidationRow rx = compareRow(name, std::string("R_") + b.tag + " x (ground axes)", "N", x, b.oracle.x(),
                                       tolerance, note);
         rx.relError = std::abs(x - b.oracle.x()) / scale;
@@ -148,7 +142,7 @@ AnalysisResult frictionRows(std::vector<ValidationRow>& rows, const std::string&
         return runKinetostatic(size, o);
     };
     const AnalysisResult r1 = model(0.01), r2 = model(0.001);
-    const double m1 = at(r1, 0, "friction_B2.torque"), m2 = at(r2, 0, "friction_B2.torque");
+    const double m1 = r1.value(0, "friction_B2.torque"), m2 = r2.value(0, "friction_B2.torque");
     const double o1 = oracleLoads(0.01).drums[1].bearingFrictionTorque;
     const double o2 = oracleLoads(0.001).drums[1].bearingFrictionTorque;
     ValidationRow row = compareRow(name, "friction torque at B2, f = 0.01", "N*m", m1, o1, 0.0,
@@ -171,24 +165,24 @@ void startUpCases(const Size& size, const std::string& filter, std::vector<Valid
     const std::string nStart = base + "_start_up";
     if (wanted(nStart, filter)) {
         const AnalysisResult r = runKinetostatic(size, noFriction());
-        rows.push_back(compareRow(nStart, "J_pr (2 KE/ω1², charges hanging)", "kg*m^2", at(r, 0, "reduced_inertia"),
+        rows.push_back(compareRow(nStart, "J_pr (2 KE/ω1², charges hanging)", "kg*m^2", r.value(0, "reduced_inertia"),
                                   oracle.calcReducedInertia(0.0), kKinetostaticTolerance,
                                   "(1) with the carrier counted once (printed: 2(J1 + ...))"));
-        rows.push_back(compareRow(nStart, "start torque M = J_pr ε0 (f = 0)", "N*m", at(r, 0, "drive.torque"),
+        rows.push_back(compareRow(nStart, "start torque M = J_pr ε0 (f = 0)", "N*m", r.value(0, "drive.torque"),
                                   oracle.calcStartUpTorque(eps0), kKinetostaticTolerance,
                                   "(20) at ω = 0; drive torque = −findMotionForces"));
         const oc::PlanetaryGearLoads loads = oracle.calcStartUpLoads(eps0);
-        rows.push_back(compareRow(nStart, "mesh tangential force F (drum 2)", "N", at(r, 0, "mesh2.tangential_force"),
+        rows.push_back(compareRow(nStart, "mesh tangential force F (drum 2)", "N", r.value(0, "mesh2.tangential_force"),
                                   loads.drums[1].gearTangentialForce, kKinetostaticTolerance,
                                   "(19): F r = ε2 (J_c + m_bz Bc²)"));
         rows.push_back(compareRow(nStart, "mesh separating force N = F tan 20°", "N",
-                                  at(r, 0, "mesh2.separating_force"), loads.drums[1].gearRadialForce,
+                                  r.value(0, "mesh2.separating_force"), loads.drums[1].gearRadialForce,
                                   kKinetostaticTolerance, "(17)-(19), on the line of action"));
         compareReactions(rows, nStart, r, 0, loads, kKinetostaticTolerance,
                          "(16)-(18) with the weights G1, G (gravity on)");
         // The printed J_pr differs from the corrected one by J1 exactly.
         ValidationRow printed = compareRow(nStart, "J_pr as printed in (1), 2(J1 + ...)", "kg*m^2",
-                                           at(r, 0, "reduced_inertia"), oracle.calcReducedInertiaAsPrinted(0.0),
+                                           r.value(0, "reduced_inertia"), oracle.calcReducedInertiaAsPrinted(0.0),
                                            kKinetostaticTolerance,
                                            "misprint: the carrier counted twice; the model's kinetic energy has "
                                            "it once (difference = J1)");
@@ -222,7 +216,7 @@ void startUpCases(const Size& size, const std::string& filter, std::vector<Valid
         // The drive torque: friction is ~0.2 % of it, so the O(f) difference
         // of the friction part is O(f) * 0.2 % of the whole.
         rows.push_back(compareRow(nFriction, "drive torque with friction (20), f = 0.01", "N*m",
-                                  at(r1, 0, "drive.torque"), loads.driveTorque, 1e-5,
+                                  r1.value(0, "drive.torque"), loads.driveTorque, 1e-5,
                                   "friction 0.2 % of the torque, its first-order difference 0.2 % of that"));
     }
 }
@@ -257,7 +251,7 @@ void steadyCases(const Size& size, const std::string& filter, std::vector<Valida
         const AnalysisResult r = runKinetostatic(size, o);
         double worstTorque = 0, worstReaction = 0, worstJ = 0;
         for (int k = 0; k < points; ++k) {
-            const double phi = at(r, k, "carrier_angle");
+            const double phi = r.value(k, "carrier_angle");
             oc::PlanetaryGearMotionState st = oracle.makeSteadyState(w, phi);
             if (v.motion == oc::ChargeMotion::kRotatesWithDrum) {
                 // Charges turn with their drums from hanging at φ = 0.
@@ -267,13 +261,13 @@ void steadyCases(const Size& size, const std::string& filter, std::vector<Valida
             const oc::PlanetaryGearLoads loads = oracle.calcLoads(st, v.motion);
             const double torqueScale = std::max(std::abs(loads.driveTorque), 1e-3 * loads.drums[1].bearingForce.norm() *
                                                                                  oracle.getParameters().drumRadius);
-            worstTorque = std::max(worstTorque, std::abs(at(r, k, "drive.torque") - loads.driveTorque) / torqueScale);
+            worstTorque = std::max(worstTorque, std::abs(r.value(k, "drive.torque") - loads.driveTorque) / torqueScale);
             const double jOracle = oracle.calcReducedInertia(st, v.motion);
-            worstJ = std::max(worstJ, std::abs(at(r, k, "reduced_inertia") - jOracle) / jOracle);
-            const Eigen::Vector2d a(at(r, k, "reaction_A.on_carrier_at_axis_x_ground"),
-                                    at(r, k, "reaction_A.on_carrier_at_axis_y_ground"));
-            const Eigen::Vector2d b2(at(r, k, "reaction_B2.on_drum2_at_axis_x_ground"),
-                                     at(r, k, "reaction_B2.on_drum2_at_axis_y_ground"));
+            worstJ = std::max(worstJ, std::abs(r.value(k, "reduced_inertia") - jOracle) / jOracle);
+            const Eigen::Vector2d a(r.value(k, "reaction_A.on_carrier_at_axis_x_ground"),
+                                    r.value(k, "reaction_A.on_carrier_at_axis_y_ground"));
+            const Eigen::Vector2d b2(r.value(k, "reaction_B2.on_drum2_at_axis_x_ground"),
+                                     r.value(k, "reaction_B2.on_drum2_at_axis_y_ground"));
             worstReaction = std::max({worstReaction,
                                       (a - loads.carrierBearingForce).norm() / loads.drums[1].bearingForce.norm(),
                                       (b2 - loads.drums[1].bearingForce).norm() / loads.drums[1].bearingForce.norm()});
@@ -314,13 +308,13 @@ void steadyCases(const Size& size, const std::string& filter, std::vector<Valida
             const double amplitude = 2 * oracle.calcChargeMass() * oracle.calcChargeCentroidOffset() * w * w *
                                      (p.sunRadius + p.drumRadius) * p.sunRadius / p.drumRadius;
             ValidationRow m = compareRow(name, "charge-holding drive torque at φ = 0 (f = 0)", "N*m",
-                                         at(r, 0, "drive.torque"), loads.driveTorque, kKinetostaticTolerance,
+                                         r.value(0, "drive.torque"), loads.driveTorque, kKinetostaticTolerance,
                                          "2 T_wall R/r, T_wall = m_z l_c ω1²(R+r) cos α, relative to its amplitude "
                                          "at α = 0; the paper's (26) loses it");
-            m.relError = std::abs(at(r, 0, "drive.torque") - loads.driveTorque) / amplitude;
+            m.relError = std::abs(r.value(0, "drive.torque") - loads.driveTorque) / amplitude;
             m.status = m.relError <= kKinetostaticTolerance ? "pass" : "fail";
             rows.push_back(m);
-            rows.push_back(compareRow(name, "wall torque holding charge 2", "N*m", at(r, 0, "charge2.wall_torque"),
+            rows.push_back(compareRow(name, "wall torque holding charge 2", "N*m", r.value(0, "charge2.wall_torque"),
                                       loads.drums[1].gearMomentAboutAxis, kKinetostaticTolerance,
                                       "the drum's moment balance: the wall's torque on the charge is the gear's "
                                       "moment on the drum about B (here the weight's moment, m_z g l_c, and the "
@@ -341,7 +335,7 @@ AnalysisResult runStart(const Size& size, double interval) {
 /// The sample of `r` at time `t` (samples every `interval` from 0).
 double sampleAt(const AnalysisResult& r, const std::string& name, double t) {
     for (std::size_t k = 0; k < r.rows.size(); ++k)
-        if (std::abs(r.rows[k][0] - t) < 1e-9) return at(r, k, name);
+        if (std::abs(r.rows[k][0] - t) < 1e-9) return r.value(k, name);
     throw std::runtime_error("no sample at t = " + fmt(t));
 }
 
@@ -358,7 +352,7 @@ void figure10Cases(const Size& size, const std::string& filter, std::vector<Vali
         auto modelTorque = [&](double tp) {
             std::vector<Override> o = noFriction();
             o.push_back({"elements.drive.acceleration_time", fmt(tp) + " s"});
-            return at(runKinetostatic(size, o), 0, "drive.torque");
+            return runKinetostatic(size, o).value(0, "drive.torque");
         };
         const double asymptote = modelTorque(tpLong);
         for (double tp : planetaryGearFig10AccelerationTimes()) {
@@ -432,7 +426,7 @@ void dynamicLagCases(const Size& size, const std::string& filter, std::vector<Va
     spec.bodies.front().initialSpeed = w;  // the carrier
     const double cw = spec.findElement("charge2")->number("wall_drag");
     const AnalysisResult r = runAnalysis(spec);
-    const double lag = at(r, r.rows.size() - 1, "charge2.lag");
+    const double lag = r.value(r.rows.size() - 1, "charge2.lag");
 
     oc::PlanetaryGearParameters p = oracleParameters(size, 0);
     p.gravity = 0;
@@ -451,7 +445,7 @@ void dynamicLagCases(const Size& size, const std::string& filter, std::vector<Va
                               "transient settled after 1.5 s; oracle: T_wall(α) = c_w ω_r with the held-charge "
                               "kinetostatics (cos α = c_w ω_r/(m_z l_c ω1²(R+r)))"));
     rows.push_back(compareRow(name, "wall torque = grinding torque at the settled lag", "N*m",
-                              at(r, r.rows.size() - 1, "charge2.wall_torque"), target, 1e-6,
+                              r.value(r.rows.size() - 1, "charge2.wall_torque"), target, 1e-6,
                               "c_w ω_r: the power the charge takes is c_w ω_r²"));
 }
 
@@ -502,7 +496,7 @@ void simulatePlanetaryGearStart(int sizeIndex, double interval, std::vector<doub
     torque.clear();
     for (std::size_t k = 0; k < r.rows.size(); ++k) {
         time.push_back(r.rows[k][0]);
-        torque.push_back(at(r, k, "drive.torque"));
+        torque.push_back(r.value(k, "drive.torque"));
     }
 }
 
