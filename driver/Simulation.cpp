@@ -94,7 +94,7 @@ RunStatistics Simulation::statistics() const {
     return s;
 }
 
-void Simulation::checkFinite(const SimTK::State& state) const {
+void Simulation::evaluateAndCheck(const SimTK::State& state) {
     const double t = state.getTime();
     for (const auto& b : m_scene.bodies()) {
         const double q = pinAngle(state, b.mobod), u = pinSpeed(state, b.mobod);
@@ -102,8 +102,10 @@ void Simulation::checkFinite(const SimTK::State& state) const {
             throw AnalysisError("the motion of body " + b.name + " is not finite at " + timeText(t) +
                                 " (the analysis diverged)");
     }
+    m_probeValues.clear();
     for (const auto& p : m_scene.probes()) {
         const double v = p.value(state);
+        m_probeValues.push_back(v);
         if (!std::isfinite(v)) {
             const std::string element = p.name.substr(0, p.name.find('.'));
             throw AnalysisError("element " + element + ": " + p.name + " is not finite at " + timeText(t));
@@ -121,7 +123,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
     // located crossing; copying a State costs more than a step here.
     auto emit = [&](const SimTK::State& s) {
         system.realize(s, SimTK::Stage::Acceleration);
-        checkFinite(s);
+        evaluateAndCheck(s);
         m_lastSampleIsCrossing = false;
         if (onSample) onSample(s);
     };

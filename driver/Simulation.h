@@ -72,6 +72,10 @@ public:
     /// The state of the last onSample call of the last run() (realized to
     /// Acceleration): the end, or the located crossing of a watch.
     const SimTK::State& lastSample() const;
+    /// The scene's probe values (Scene::probes() order) at the sample being
+    /// passed to onSample, already checked finite: evaluated once per
+    /// sample, so recorders and summaries need not evaluate them again.
+    const std::vector<double>& probeValues() const { return m_probeValues; }
     RunStatistics statistics() const;
 
 private:
@@ -81,8 +85,11 @@ private:
     RunStatistics m_extra;  // work done by crossing searches
     SimTK::State m_crossingSample;
     bool m_lastSampleIsCrossing = false;
+    std::vector<double> m_probeValues;
 
-    void checkFinite(const SimTK::State& state) const;
+    /// Fills m_probeValues; throws AnalysisError naming the body or element
+    /// whose output is not finite.
+    void evaluateAndCheck(const SimTK::State& state);
     /// Iterates the scene's each-step lagged values (iterated journal
     /// reactions) to consistency at the current step end and restarts the
     /// integrator there if they changed; true if it did.

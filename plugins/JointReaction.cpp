@@ -2,6 +2,7 @@
 // exerts on it through its joint (a bearing reaction), from Simbody.
 
 #include "plugins/ElementRegistry.h"
+#include "plugins/MobilizerReactions.h"
 
 #include <cmath>
 
@@ -9,21 +10,14 @@ namespace milldyn {
 
 namespace {
 
-/// Force of the parent on `body` at its joint axis (the mobilizer's M-frame
-/// origin), in ground axes [N]. Includes every constraint, motion and
-/// applied force (docs/simbody-notes.md); needs Stage::Acceleration.
-SimTK::Vec3 calcJointForceInGround(const SimTK::State& s, const SimTK::SimbodyMatterSubsystem& matter,
-                                   const SimTK::MobilizedBody& body) {
-    SimTK::Vector_<SimTK::SpatialVec> reactions;
-    matter.calcMobilizerReactionForces(s, reactions);
-    return reactions[body.getMobilizedBodyIndex()][1];
-}
-
 void buildJointReaction(const ElementSpec& spec, Scene& scene) {
     const SceneBody* body = scene.findBody(spec.text("body"));
-    const SimTK::SimbodyMatterSubsystem* matter = &scene.matter();
+    // Force of the parent on the body at its joint axis (the mobilizer's
+    // M-frame origin), ground axes [N]. Includes every constraint, motion
+    // and applied force (docs/simbody-notes.md); needs Stage::Acceleration.
+    const MobilizerReactions* reactions = &scene.mobilizerReactions();
     const SimTK::MobilizedBody mobod = body->mobod;
-    auto force = [matter, mobod](const SimTK::State& s) { return calcJointForceInGround(s, *matter, mobod); };
+    auto force = [reactions, mobod](const SimTK::State& s) { return reactions->getForce(s, mobod); };
     const std::string stem = spec.name + ".on_" + body->name + "_at_axis";
     scene.addProbe({stem + "_x_ground", "N", ProbeRole::Generic, SimTK::Stage::Acceleration,
                     [force](const SimTK::State& s) { return force(s)[0]; }});

@@ -11,9 +11,9 @@ namespace milldyn {
 
 using namespace SimTK;
 
-JournalFriction::JournalFriction(const SimbodyMatterSubsystem& matter, const MobilizedBody& body,
-                                 const JournalFrictionParams& p)
-    : m_matter(matter), m_body(body), m_p(p) {
+JournalFriction::JournalFriction(const SimbodyMatterSubsystem& matter, const MobilizerReactions& reactions,
+                                 const MobilizedBody& body, const JournalFrictionParams& p)
+    : m_matter(matter), m_reactions(reactions), m_body(body), m_p(p) {
     auto bad = [](const std::string& what) { throw std::invalid_argument("JournalFriction: " + what); };
     if (!(p.frictionCoefficient >= 0 && p.frictionCoefficient <= 1)) bad("friction_coefficient must be in [0, 1]");
     if (!(p.journalDiameter >= 0) || !std::isfinite(p.journalDiameter)) bad("journal_diameter must be >= 0 m");
@@ -27,9 +27,7 @@ void JournalFriction::realizeTopology(State& s) const {
 }
 
 double JournalFriction::calcReaction(const State& s) const {
-    Vector_<SpatialVec> reactions;
-    m_matter.calcMobilizerReactionForces(s, reactions);
-    return reactions[m_body.getMobilizedBodyIndex()][1].norm();
+    return m_reactions.getForce(s, m_body).norm();
 }
 
 const Vec4& JournalFriction::history(const State& s) const {
@@ -86,7 +84,7 @@ void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
     p.coupling = coupling == "iterated"       ? ReactionCoupling::Iterated
                  : coupling == "extrapolated" ? ReactionCoupling::Extrapolated
                                               : ReactionCoupling::Lagged;
-    auto* impl = new JournalFriction(scene.matter(), body->mobod, p);
+    auto* impl = new JournalFriction(scene.matter(), scene.mobilizerReactions(), body->mobod, p);
     Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, Stage::Velocity,

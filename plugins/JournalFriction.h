@@ -2,6 +2,7 @@
 // JournalFriction: friction torque in a plain (journal) bearing, driven by
 // the reaction the model itself computes in that journal.
 
+#include "plugins/MobilizerReactions.h"
 #include "plugins/Scene.h"
 
 
@@ -55,8 +56,9 @@ struct JournalFrictionParams {
  */
 class JournalFriction : public SimTK::Force::Custom::Implementation {
 public:
-    JournalFriction(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& body,
-                    const JournalFrictionParams& p);
+    /// `reactions`: the scene's shared reaction cache (Scene::mobilizerReactions()).
+    JournalFriction(const SimTK::SimbodyMatterSubsystem& matter, const MobilizerReactions& reactions,
+                    const SimTK::MobilizedBody& body, const JournalFrictionParams& p);
 
     const JournalFrictionParams& params() const { return m_p; }
     const SimTK::MobilizedBody& body() const { return m_body; }
@@ -80,6 +82,7 @@ public:
 
 private:
     const SimTK::SimbodyMatterSubsystem& m_matter;
+    const MobilizerReactions& m_reactions;
     SimTK::MobilizedBody m_body;
     JournalFrictionParams m_p;
     mutable SimTK::DiscreteVariableIndex m_keptLoad;

@@ -1,5 +1,7 @@
 #include "plugins/Scene.h"
 
+#include "plugins/MobilizerReactions.h"
+
 #include <stdexcept>
 
 namespace milldyn {
@@ -8,6 +10,15 @@ Scene::Scene() : m_matter(m_system), m_forces(m_system) {}
 
 void Scene::addBody(const std::string& name, const SimTK::MobilizedBody& mobod) {
     m_bodies.push_back({name, mobod});
+}
+
+const MobilizerReactions& Scene::mobilizerReactions() {
+    if (!m_reactions) {
+        auto* impl = new MobilizerReactions(m_matter);
+        SimTK::Force::Custom(m_forces, impl);  // Simbody owns impl
+        m_reactions = impl;
+    }
+    return *m_reactions;
 }
 
 const SceneBody* Scene::findBody(const std::string& name) const {

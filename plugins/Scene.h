@@ -17,6 +17,7 @@
 namespace milldyn {
 
 class EnergyMeter;
+class MobilizerReactions;
 
 /// What a probe measures, so that analyses can find, for example, every
 /// resistance torque without knowing the element types.
@@ -85,6 +86,12 @@ public:
     /// keep the pointer across it.
     const SceneBody* findBody(const std::string& name) const;
     const std::vector<SceneBody>& bodies() const { return m_bodies; }
+
+    /// The scene's shared cache of Simbody's mobilizer reactions, built on
+    /// first use (before the system's topology is realized): every element
+    /// that reads a joint reaction asks it, so one realization computes them
+    /// once.
+    const MobilizerReactions& mobilizerReactions();
 
     void addProbe(Probe probe) { m_probes.push_back(std::move(probe)); }
     const std::vector<Probe>& probes() const { return m_probes; }
@@ -193,6 +200,7 @@ private:
     std::vector<SteadyResidual> m_steadyResiduals;
     std::vector<EnergyFlow> m_energyFlows;
     const EnergyMeter* m_energyMeter = nullptr;
+    const MobilizerReactions* m_reactions = nullptr;
     struct ForceEntry {
         std::string type;
         SimTK::ForceIndex index;

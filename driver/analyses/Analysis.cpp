@@ -335,7 +335,7 @@ SampleTable::SampleTable(const Scene& scene, AnalysisResult& result) : m_scene(s
     }
 }
 
-void SampleTable::record(const SimTK::State& s) {
+void SampleTable::record(const SimTK::State& s, const std::vector<double>& probeValues) {
     std::vector<double> row;
     row.reserve(m_result.columnNames.size());
     row.push_back(s.getTime());
@@ -343,7 +343,7 @@ void SampleTable::record(const SimTK::State& s) {
         row.push_back(pinAngle(s, b.mobod));
         row.push_back(pinSpeed(s, b.mobod));
     }
-    for (const auto& p : m_scene.probes()) row.push_back(p.value(s));
+    row.insert(row.end(), probeValues.begin(), probeValues.end());
     m_result.rows.push_back(std::move(row));
 }
 

@@ -128,7 +128,9 @@ void addDefaultPlots(AnalysisResult& result);
 class SampleTable {
 public:
     SampleTable(const Scene& scene, AnalysisResult& result);
-    void record(const SimTK::State& state);
+    /// One row: time, every body's angle and speed, then `probeValues`
+    /// (the scene's probes at `state`, as Simulation::probeValues() has them).
+    void record(const SimTK::State& state, const std::vector<double>& probeValues);
     /// Column index of a name, or npos.
     std::size_t column(const std::string& name) const;
 

@@ -88,7 +88,7 @@ public:
         SimTK::State last = first;
         auto onSample = [&](const SimTK::State& s) {
             if (!table) return;
-            table->record(s);
+            table->record(s, sim.probeValues());
             last = s;
         };
         const auto stop = sim.run(endLimit, spec.outputs.sampleInterval, onSample, &watch);

@@ -44,7 +44,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     double peakDrive = 0;
     std::vector<double> peakCoupling(scene->probes().size(), 0.0);
     auto onSample = [&](const SimTK::State& s) {
-        table.record(s);
+        const std::vector<double>& values = sim.probeValues();
+        table.record(s, values);
         if (observer) {
             SimTK::State drawn = s;
             scene->system().realize(drawn, SimTK::Stage::Acceleration);
@@ -54,10 +55,13 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             steady = s;
             steadyCopied = true;
         }
-        peakDrive = std::max(peakDrive, std::abs(sumProbes(*scene, s, ProbeRole::DriveTorque)));
-        for (std::size_t i = 0; i < scene->probes().size(); ++i)
-            if (scene->probes()[i].role == ProbeRole::CouplingTorque)
-                peakCoupling[i] = std::max(peakCoupling[i], std::abs(scene->probes()[i].value(s)));
+        double drive = 0;
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const ProbeRole role = scene->probes()[i].role;
+            if (role == ProbeRole::DriveTorque) drive += values[i];
+            if (role == ProbeRole::CouplingTorque) peakCoupling[i] = std::max(peakCoupling[i], std::abs(values[i]));
+        }
+        peakDrive = std::max(peakDrive, std::abs(drive));
         if (progress) progress(s.getTime(), endTime);
     };
 
