@@ -1,5 +1,7 @@
 #include "driver/Simulation.h"
 
+#include "plugins/EnergyMeter.h"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -43,13 +45,94 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::System& system, c
     throw std::invalid_argument("unknown integrator '" + name + "'");
 }
 
+int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
+    const SimTK::MultibodySystem& system = scene.system();
+    const auto& unknowns = scene.kinetostaticUnknowns();
+    const std::size_t n = unknowns.size();
+    for (int iter = 1; iter <= 100; ++iter) {
+        double worstResidual = 0;
+        if (n > 0) {
+            // The residuals (accelerations) are linear in the torques: one
+            // Newton step with a finite-difference Jacobian solves them.
+            Eigen::VectorXd x(n), r0(n);
+            system.realize(s, SimTK::Stage::Acceleration);
+            for (std::size_t i = 0; i < n; ++i) {
+                x[i] = unknowns[i].get(s);
+                r0[i] = unknowns[i].residual(s);
+            }
+            Eigen::MatrixXd J(n, n);
+            for (std::size_t j = 0; j < n; ++j) {
+                const double h = 1e-3 * std::max(1.0, std::abs(x[j]));
+                unknowns[j].set(s, x[j] + h);
+                system.realize(s, SimTK::Stage::Acceleration);
+                for (std::size_t i = 0; i < n; ++i) J(i, j) = (unknowns[i].residual(s) - r0[i]) / h;
+                unknowns[j].set(s, x[j]);
+            }
+            const Eigen::VectorXd dx = J.fullPivLu().solve(-r0);
+            for (std::size_t i = 0; i < n; ++i) {
+                unknowns[i].set(s, x[i] + dx[i]);
+                // Converged when Newton's correction is round-off on the
+                // torque (or on 1 N*m for a torque that is zero).
+                worstResidual = std::max(worstResidual, std::abs(dx[i]) / std::max(1.0, std::abs(x[i] + dx[i])));
+            }
+        }
+        double worstChange = 0;
+        for (const auto& lagged : scene.laggedValues()) worstChange = std::max(worstChange, lagged.refresh(s));
+        if (!(worstChange > tolerance) && !(worstResidual > tolerance)) {
+            if (!std::isfinite(worstChange) || !std::isfinite(worstResidual))
+                throw AnalysisError("kinetostatic: non-finite loads at carrier angle " +
+                                    std::to_string(s.getQ()[0]) + " rad");
+            system.realize(s, SimTK::Stage::Acceleration);
+            return iter;
+        }
+    }
+    throw AnalysisError("kinetostatic: wall torques and journal reactions did not converge in 100 iterations");
+}
+
 Simulation::Simulation(const Scene& scene, const IntegratorSpec& settings)
     : m_scene(scene), m_settings(settings) {
     m_extra.integrator = settings.name;
     m_extra.accuracy = settings.accuracy;
 }
 
-void Simulation::initialize(const SimTK::State& start) {
+void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
+    m_replay = false;
+    m_replayReason.clear();
+    if (allowReplay) {
+        m_replayReason = whyNoReplay(start);
+        if (m_replayReason.empty()) {
+            m_replay = true;
+            m_replayState = start;
+            m_replayStart = start.getTime();
+            m_trajectoryStart.clear();
+            for (const auto& p : m_scene.prescribedTrajectories())
+                m_trajectoryStart.emplace_back(pinAngle(start, p.mobod), pinSpeed(start, p.mobod));
+            m_extra.integrator = "replay";
+            m_extra.accuracy = 0;
+            placeReplay(m_replayStart);
+            // The count says no free mobility is left; the placement must
+            // also satisfy the constraints (every dependent body placed).
+            const SimTK::State& s = m_replayState;
+            const double qerr = s.getNQErr() > 0 ? s.getQErr().normInf() : 0;
+            const double uerr = s.getNUErr() > 0 ? s.getUErr().normInf() : 0;
+            if (qerr <= 1e-9 && uerr <= 1e-9) {
+                m_replayReason = "no free degrees of freedom (" + std::to_string(s.getNU()) + " mobilities: " +
+                                 std::to_string(m_scene.prescribedTrajectories().size()) + " prescribed by drives, " +
+                                 std::to_string(s.getNUDotErr()) + " fixed by constraints, " +
+                                 std::to_string(m_scene.kinetostaticUnknowns().size()) +
+                                 " held by instant unknowns): replayed at the samples, no integration; "
+                                 "journal reactions consistent at each instant; energy integrals by the "
+                                 "trapezoid rule over the samples";
+                return;
+            }
+            m_replay = false;
+            m_extra = RunStatistics();
+            m_extra.integrator = m_settings.name;
+            m_extra.accuracy = m_settings.accuracy;
+            m_replayReason = "integrated: the elements' placement leaves constraint errors (" +
+                             std::to_string(std::max(qerr, uerr)) + ")";
+        }
+    }
     SimTK::State state = start;
     // Switchings due at the start time take effect before the first step.
     for (const auto& e : m_scene.switchEvents())
@@ -74,10 +157,72 @@ void Simulation::initialize(const SimTK::State& start) {
     m_integrator->resetAllStatistics();
 }
 
-const SimTK::State& Simulation::state() const { return m_integrator->getState(); }
+const SimTK::State& Simulation::state() const { return m_replay ? m_replayState : m_integrator->getState(); }
 
 const SimTK::State& Simulation::lastSample() const {
+    if (m_replay) return m_replayState;
     return m_lastSampleIsCrossing ? m_crossingSample : m_integrator->getState();
+}
+
+std::string Simulation::whyNoReplay(const SimTK::State& start) const {
+    SimTK::State s = start;
+    m_scene.system().realize(s, SimTK::Stage::Instance);
+    const SimTK::SimbodyMatterSubsystem& matter = m_scene.matter();
+    if (!m_scene.switchEvents().empty()) return "integrated: the run has scheduled switchings";
+    const int flows = m_scene.energyMeter() ? static_cast<int>(m_scene.energyMeter()->flows().size()) : 0;
+    if (s.getNZ() != flows) return "integrated: elements have continuous states of their own";
+    // A drive prescribing the acceleration leaves q and u states but makes
+    // udot known: the free mobilities are those with unknown udot.
+    const int nu = s.getNU(), freeU = static_cast<int>(matter.getFreeUDotIndex(s).size());
+    const int prescribed = nu - freeU;
+    // Every prescribed mobility needs a time law the replay can evaluate.
+    int withLaw = 0;
+    for (const auto& p : m_scene.prescribedTrajectories())
+        if (p.mobod.getNumU(s) == 1) ++withLaw;
+    if (withLaw != prescribed) return "integrated: a prescribed motion has no time law the replay can evaluate";
+    const int free = freeU - s.getNUDotErr() - static_cast<int>(m_scene.kinetostaticUnknowns().size());
+    if (free != 0) return "integrated: " + std::to_string(free) + " free degrees of freedom";
+    return "";
+}
+
+void Simulation::placeReplay(double t) {
+    SimTK::State& s = m_replayState;
+    const SimTK::MultibodySystem& system = m_scene.system();
+    // z: the energy meter's integrals; advanced by the trapezoid rule with
+    // the derivatives at the previous placement and at this one.
+    const double dt = t - s.getTime();
+    SimTK::Vector zdotBefore;
+    if (s.getNZ() > 0 && dt > 0) zdotBefore = s.getZDot();
+    s.setTime(t);
+    const auto& laws = m_scene.prescribedTrajectories();
+    for (std::size_t i = 0; i < laws.size(); ++i) {
+        const auto motion = laws[i].advance(m_replayStart, m_trajectoryStart[i].second, t);
+        laws[i].mobod.setOneQ(s, SimTK::MobilizerQIndex(0), m_trajectoryStart[i].first + motion.first);
+        laws[i].mobod.setOneU(s, SimTK::MobilizerUIndex(0), motion.second);
+    }
+    for (const auto& init : m_scene.initializers()) init(s);
+    m_extra.realizations += solveInstant(m_scene, s, kLaggedTolerance);
+    if (zdotBefore.size() > 0) {
+        const SimTK::Vector zdot = s.getZDot();
+        s.updZ() += 0.5 * dt * (zdotBefore + zdot);
+        system.realize(s, SimTK::Stage::Acceleration);
+        ++m_extra.realizations;
+    }
+    ++m_extra.steps;
+}
+
+std::optional<double> Simulation::runReplay(double endTime, double sampleInterval, const SampleFn& onSample) {
+    const double t0 = m_replayState.getTime();
+    auto emit = [&]() {
+        evaluateAndCheck(m_replayState);
+        if (onSample) onSample(m_replayState);
+    };
+    emit();
+    for (long k = 1; m_replayState.getTime() < endTime; ++k) {
+        placeReplay(std::min(t0 + k * sampleInterval, endTime));
+        emit();
+    }
+    return std::nullopt;
 }
 
 void Simulation::accumulateStatistics() {
@@ -88,6 +233,7 @@ void Simulation::accumulateStatistics() {
 
 RunStatistics Simulation::statistics() const {
     RunStatistics s = m_extra;
+    if (m_replay) return s;
     s.steps += m_integrator->getNumStepsTaken();
     s.realizations += m_integrator->getNumRealizations();
     s.stepAttempts += m_integrator->getNumStepsAttempted();
@@ -115,6 +261,11 @@ void Simulation::evaluateAndCheck(const SimTK::State& state) {
 
 std::optional<double> Simulation::run(double endTime, double sampleInterval, const SampleFn& onSample,
                                       const Watch* watch) {
+    if (m_replay) {
+        // A watch needs a switch-off first, and switchings rule out a replay.
+        if (watch) throw AnalysisError("internal: a watched run cannot be a replay");
+        return runReplay(endTime, sampleInterval, onSample);
+    }
     SimTK::Integrator& integ = *m_integrator;
     const SimTK::System& system = m_scene.system();
     const double t0 = integ.getTime();

@@ -40,8 +40,24 @@ class Simulation {
 public:
     Simulation(const Scene& scene, const IntegratorSpec& settings);
 
-    /// Starts from `state` (its time is the start time).
-    void initialize(const SimTK::State& state);
+    /// Starts from `state` (its time is the start time). With `allowReplay`
+    /// a scene without free degrees of freedom is replayed instead of
+    /// integrated (see replayReason()).
+    void initialize(const SimTK::State& state, bool allowReplay = false);
+
+    /// Why the run is a replay, or why a replay was not possible (empty when
+    /// it was not asked for). A scene has no free degrees of freedom when
+    /// every mobility is prescribed by a drive with a known time law
+    /// (Scene::prescribedTrajectories), fixed by a constraint, or held by a
+    /// kinetostatic unknown, and it has no scheduled switchings and no
+    /// continuous states but the energy meter's. Its state at time t then
+    /// follows from t alone: the replay places it at each sample (the
+    /// drives' laws, the elements' initializers, instant unknowns and
+    /// journal reactions solved to consistency as in the kinetostatic
+    /// analysis) and realizes it once; the energy meter's integrals are
+    /// summed by the trapezoid rule over the samples. No integrator runs.
+    bool isReplay() const { return m_replay; }
+    const std::string& replayReason() const { return m_replayReason; }
 
     using SampleFn = std::function<void(const SimTK::State&)>;
 
@@ -96,7 +112,26 @@ private:
     bool makeLaggedValuesConsistent();
     void accumulateStatistics();
     SimTK::State locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch);
+
+    // Replay (no free degrees of freedom).
+    bool m_replay = false;
+    std::string m_replayReason;
+    SimTK::State m_replayState;
+    double m_replayStart = 0;                       // [s]
+    std::vector<std::pair<double, double>> m_trajectoryStart;  // {angle [rad], speed [rad/s]} per trajectory
+    /// Empty if the scene can be replayed from `state`, else why not.
+    std::string whyNoReplay(const SimTK::State& state) const;
+    /// Places m_replayState at time t (energy integrals advanced by the
+    /// trapezoid rule from the previous placement), realized to Acceleration.
+    void placeReplay(double t);
+    std::optional<double> runReplay(double endTime, double sampleInterval, const SampleFn& onSample);
 };
+
+/// Solves a scene's instantaneous unknowns in `s` (held charges' wall
+/// torques by Newton, journals' kept reactions by fixed point) to the
+/// relative `tolerance`, leaving `s` realized to Acceleration; returns the
+/// number of outer iterations. Throws AnalysisError if they do not converge.
+int solveInstant(const Scene& scene, SimTK::State& s, double tolerance);
 
 /// Solves for steady running about the mean load (periodic excitations off
 /// while solving): all accelerations zero and every steady residual of the

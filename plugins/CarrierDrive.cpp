@@ -31,6 +31,15 @@ double CarrierDrive::calcSpeed(double t) const {
     return calcInitialAcceleration() * m_p.timeConstant * -std::expm1(-t / m_p.timeConstant);
 }
 
+std::pair<double, double> CarrierDrive::calcAdvance(double t0, double u0, double t) const {
+    if (!m_p.exponential) return {u0 * (t - t0), u0};
+    const double e0 = calcInitialAcceleration(), tau = m_p.timeConstant;
+    // expm1 keeps V and P accurate near t = 0 (no 1 − e^(−t/τ) cancellation).
+    auto V = [&](double x) { return e0 * tau * -std::expm1(-x / tau); };
+    auto P = [&](double x) { return e0 * tau * (x + tau * std::expm1(-x / tau)); };
+    return {(u0 - V(t0)) * (t - t0) + P(t) - P(t0), u0 + V(t) - V(t0)};
+}
+
 void CarrierDrive::calcPrescribedAcceleration(const State& s, int nu, Real* udot) const {
     for (int i = 0; i < nu; ++i) udot[i] = 0;
     if (nu > 0) udot[0] = calcAcceleration(s.getTime());
@@ -65,6 +74,8 @@ void buildCarrierDrive(const ElementSpec& spec, Scene& scene) {
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source,
                          [torque, mobod](const State& s) { return torque(s) * pinSpeed(s, mobod); }});
     scene.addSpeedHint(body->name, p.steadySpeed);
+    scene.addPrescribedTrajectory(
+        {body->name, mobod, [impl](double t0, double u0, double t) { return impl->calcAdvance(t0, u0, t); }});
     scene.note("motion " + spec.name + " (CarrierDrive, " + spec.text("law") + ")",
                body->name + " follows the prescribed law; drive torque = −findMotionForces");
 }

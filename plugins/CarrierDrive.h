@@ -4,6 +4,8 @@
 
 #include "plugins/Scene.h"
 
+#include <utility>
+
 namespace milldyn {
 
 struct CarrierDriveParams {
@@ -36,6 +38,12 @@ public:
     double calcInitialAcceleration() const;   ///< ε0 [rad/s^2]
     double calcAcceleration(double t) const;  ///< ε(t) [rad/s^2]
     double calcSpeed(double t) const;         ///< ω(t) [rad/s]
+    /// The motion the law gives from a start at time t0 with speed u0
+    /// (ε depends on time only, so it integrates in closed form):
+    /// u(t) = u0 + V(t) − V(t0), Δφ = (u0 − V(t0))(t − t0) + P(t) − P(t0),
+    /// V(t) = ε0 τ (1 − e^(−t/τ)), P(t) = ε0 τ (t − τ (1 − e^(−t/τ)));
+    /// V = P = 0 for the steady law. Returns {Δφ [rad], u(t) [rad/s]}.
+    std::pair<double, double> calcAdvance(double t0, double u0, double t) const;
 
     SimTK::Motion::Level getLevel(const SimTK::State&) const override { return SimTK::Motion::Acceleration; }
     void calcPrescribedAcceleration(const SimTK::State& s, int nu, SimTK::Real* udot) const override;

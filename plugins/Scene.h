@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace milldyn {
@@ -156,6 +157,19 @@ public:
     void addInitializer(std::function<void(SimTK::State&)> f) { m_initializers.push_back(std::move(f)); }
     const std::vector<std::function<void(SimTK::State&)>>& initializers() const { return m_initializers; }
 
+    /// A body whose motion is a known function of time (a drive prescribing
+    /// its acceleration from the time alone). With every mobility either
+    /// prescribed so or fixed by constraints and instant unknowns, a
+    /// transient needs no integration (Simulation's replay).
+    struct PrescribedTrajectory {
+        std::string body;
+        SimTK::MobilizedBody mobod;
+        /// From speed u0 at time t0 to time t: {angle change [rad], speed at t [rad/s]}.
+        std::function<std::pair<double, double>(double t0, double u0, double t)> advance;
+    };
+    void addPrescribedTrajectory(PrescribedTrajectory p) { m_trajectories.push_back(std::move(p)); }
+    const std::vector<PrescribedTrajectory>& prescribedTrajectories() const { return m_trajectories; }
+
     /// Unknowns a kinetostatic analysis must solve for besides the
     /// accelerations: a torque whose value makes `residual` zero (a held
     /// charge's wall torque: residual = its acceleration in the carrier
@@ -217,6 +231,7 @@ private:
     std::vector<std::function<void(SimTK::State&)>> m_initializers;
     std::vector<KinetostaticUnknown> m_kinetostaticUnknowns;
     std::vector<LaggedValue> m_laggedValues;
+    std::vector<PrescribedTrajectory> m_trajectories;
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_excitations;
 };
 

@@ -56,6 +56,11 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
         P::body("speed_body", "body whose speed the summary reports (default: the first)").optional(""),
         P::body("runout_body", "body whose first stop after switch-off ends the run-out").optional(""),
         stopSpeedParam(),
+        P::choice("zero_dof", {"replay", "integrate"},
+                  "a scene without free degrees of freedom (every mobility prescribed or constrained): "
+                  "replay: placed at each sample from the drives' time laws, no integration; "
+                  "integrate: integrated like any other")
+            .optional("replay"),
     };
     schemas["transient"] = transient;
 

@@ -8,8 +8,6 @@
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 
-#include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -25,52 +23,6 @@ void placeMechanism(const Scene& scene, const SimTK::MobilizedBody& carrier, Sim
     carrier.setOneQ(s, SimTK::MobilizerQIndex(0), angle);
     carrier.setOneU(s, SimTK::MobilizerUIndex(0), speed);
     for (const auto& init : scene.initializers()) init(s);
-}
-
-/// Solves the scene's instantaneous unknowns in `s`; returns the number of
-/// outer iterations. Throws AnalysisError if they do not converge.
-int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
-    const SimTK::MultibodySystem& system = scene.system();
-    const auto& unknowns = scene.kinetostaticUnknowns();
-    const std::size_t n = unknowns.size();
-    for (int iter = 1; iter <= 100; ++iter) {
-        double worstResidual = 0;
-        if (n > 0) {
-            // The residuals (accelerations) are linear in the torques: one
-            // Newton step with a finite-difference Jacobian solves them.
-            Eigen::VectorXd x(n), r0(n);
-            system.realize(s, SimTK::Stage::Acceleration);
-            for (std::size_t i = 0; i < n; ++i) {
-                x[i] = unknowns[i].get(s);
-                r0[i] = unknowns[i].residual(s);
-            }
-            Eigen::MatrixXd J(n, n);
-            for (std::size_t j = 0; j < n; ++j) {
-                const double h = 1e-3 * std::max(1.0, std::abs(x[j]));
-                unknowns[j].set(s, x[j] + h);
-                system.realize(s, SimTK::Stage::Acceleration);
-                for (std::size_t i = 0; i < n; ++i) J(i, j) = (unknowns[i].residual(s) - r0[i]) / h;
-                unknowns[j].set(s, x[j]);
-            }
-            const Eigen::VectorXd dx = J.fullPivLu().solve(-r0);
-            for (std::size_t i = 0; i < n; ++i) {
-                unknowns[i].set(s, x[i] + dx[i]);
-                // Converged when Newton's correction is round-off on the
-                // torque (or on 1 N*m for a torque that is zero).
-                worstResidual = std::max(worstResidual, std::abs(dx[i]) / std::max(1.0, std::abs(x[i] + dx[i])));
-            }
-        }
-        double worstChange = 0;
-        for (const auto& lagged : scene.laggedValues()) worstChange = std::max(worstChange, lagged.refresh(s));
-        if (!(worstChange > tolerance) && !(worstResidual > tolerance)) {
-            if (!std::isfinite(worstChange) || !std::isfinite(worstResidual))
-                throw AnalysisError("kinetostatic: non-finite loads at carrier angle " +
-                                    std::to_string(s.getQ()[0]) + " rad");
-            system.realize(s, SimTK::Stage::Acceleration);
-            return iter;
-        }
-    }
-    throw AnalysisError("kinetostatic: wall torques and journal reactions did not converge in 100 iterations");
 }
 
 }  // namespace

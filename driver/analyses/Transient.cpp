@@ -31,7 +31,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         if (e.kind == Scene::SwitchEvent::Kind::DriveOff) switchTime = std::min(switchTime, e.time);
 
     Simulation sim(*scene, spec.integrator);
-    sim.initialize(state);
+    sim.initialize(state, sc.text("zero_dof") == "replay");
     const SimTK::State first = sim.state();
 
     // Summary at the last sample before the first switch-off: steady running.
@@ -75,6 +75,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         sim.run(endTime, spec.outputs.sampleInterval, onSample);
     }
     result.statistics = sim.statistics();
+    if (!sim.replayReason().empty()) result.notes.push_back(sim.replayReason());
     const SimTK::State last = sim.lastSample();
     if (!steadyCopied && !(switchTime < sim.lastSample().getTime())) steady = last;
 
