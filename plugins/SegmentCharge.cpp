@@ -77,6 +77,10 @@ void SegmentCharge::setHeldTorque(State& s, double torque) const {
 }
 
 double SegmentCharge::calcDirection(const State& s) const {
+    // Turning with the drum, the charge is part of the drum's body (folded
+    // in by the builder): its centroid is at initial_direction in the drum
+    // frame.
+    if (m_p.motion == ChargeMotionMode::WithDrum) return absoluteAngle(s, m_drum) + m_p.initialDirection;
     // The body's mass centre lies on its −y axis.
     const Vec3 down = -m_charge.getBodyRotation(s).y();
     return std::atan2(down[1], down[0]);
@@ -156,17 +160,26 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     MobilizedBody drumBody = drum.mobod;  // handles: a copy is the body
     MobilizedBody chargeBody;
     if (p.motion == ChargeMotionMode::WithDrum) {
-        // Turns with the drum; at zero drum and carrier angles the centroid
-        // points along initial_direction.
-        const Rotation R(p.initialDirection + M_PI / 2, ZAxis);
-        chargeBody = MobilizedBody::Weld(drumBody, Transform(R), body, Transform());
+        // Turns with the drum, its centroid at initial_direction in the drum
+        // frame: its mass properties are added to the drum's instead of a
+        // welded body of its own. The motion and every reaction at the
+        // drum's joint are the same; a welded body would cost a body in
+        // every realization and carry nothing an output reads (the charge's
+        // lag follows from the drum's angle). Central inertia is polar
+        // about z, so it is the same in the drum frame.
+        const Vec3 comInDrum(lc * std::cos(p.initialDirection), lc * std::sin(p.initialDirection), 0);
+        const MassProperties d = drumBody.getDefaultMassProperties();
+        const double total = d.getMass() + m;
+        const Inertia aboutOrigin = d.getInertia() + Inertia(centralPolar / 2, centralPolar / 2, centralPolar) +
+                                    Inertia(comInDrum, m);
+        drumBody.setDefaultMassProperties(
+            MassProperties(total, (d.getMass() * d.getMassCenter() + m * comInDrum) / total, aboutOrigin));
     } else {
         chargeBody = MobilizedBody::Pin(drumBody, Transform(), body, Transform());
+        impl->setBody(chargeBody);
+        // Scene bodies are pins (analyses read one angle and speed from each).
+        scene.addBody(spec.name, chargeBody);
     }
-    impl->setBody(chargeBody);
-    // Scene bodies are pins (analyses read one angle and speed from each);
-    // a welded charge is part of its drum.
-    if (p.motion != ChargeMotionMode::WithDrum) scene.addBody(spec.name, chargeBody);
     // Schematic: the drum wall and the charge's segment where it is now.
     const MobilizedBody drumMobod = drum.mobod;
     const std::string drumName = drum.name;
@@ -213,9 +226,14 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                                  return impl->calcWallTorque(s) * impl->calcSlipSpeed(s);
                              }});
     }
-    scene.note("body " + spec.name + " (SegmentCharge, " + motion + ")",
+    scene.note(p.motion == ChargeMotionMode::WithDrum
+                   ? "charge " + spec.name + " (SegmentCharge, with_drum) folded into " + drum.name
+                   : "body " + spec.name + " (SegmentCharge, " + motion + ")",
                "charge of " + drum.name + ": " + std::to_string(m) + " kg, centroid " + std::to_string(lc) +
-                   " m from the axis, half-angle " + std::to_string(p.halfAngle * 180 / M_PI) + " deg");
+                   " m from the axis, half-angle " + std::to_string(p.halfAngle * 180 / M_PI) + " deg" +
+                   (p.motion == ChargeMotionMode::WithDrum
+                        ? "; turns with its drum, so its mass is the drum's (no body of its own)"
+                        : ""));
 }
 
 }  // namespace
