@@ -249,6 +249,25 @@ int commandInfo(const Arguments& a, std::ostream& out) {
     if (!spec.preset.empty()) out << "  preset " << spec.preset << ": " << spec.presetWhy << "\n";
     out << "  built:\n";
     for (const auto& n : scene->notes()) out << "    " << n.what << " — " << n.why << "\n";
+    if (!spec.notBuilt.empty() || !scene->omitted().empty()) {
+        out << "  not built:\n";
+        for (const auto& n : spec.notBuilt) out << "    " << n.what << " — " << n.why << "\n";
+        for (const auto& n : scene->omitted()) out << "    " << n.what << " — " << n.why << "\n";
+    }
+    if (spec.scenario.type == "transient") {
+        const std::string why = whyNoReplay(*scene, initialState(*scene, spec));
+        out << "  time integration: "
+            << (spec.scenario.text("zero_dof") == "integrate" ? "integrated (zero_dof: integrate)"
+                : why.empty() ? "none: no free degrees of freedom, the run is replayed at the samples"
+                              : why)
+            << "\n";
+    } else if (spec.scenario.type == "coastdown_identify") {
+        out << "  time integration: integrated (run-outs after a switch-off)\n";
+    } else if (spec.scenario.type == "frequency_response") {
+        out << "  time integration: only the optional time-domain check of the linear response\n";
+    } else {
+        out << "  time integration: none (" << spec.scenario.type << " analysis)\n";
+    }
     out << "  outputs:";
     for (const auto& p : scene->probes()) out << " " << p.name << "[" << p.unit << "]";
     out << "\n";

@@ -419,12 +419,21 @@ private:
         auto kept = [&](const std::vector<std::string>& levels) {
             return levels.empty() || std::find(levels.begin(), levels.end(), spec.fidelity) != levels.end();
         };
+        auto levels = [](const std::vector<std::string>& l) {
+            std::string text;
+            for (const auto& x : l) text += (text.empty() ? "" : ", ") + x;
+            return text;
+        };
         std::vector<BodySpec> bodies;
-        for (const auto& b : spec.bodies)
+        for (const auto& b : spec.bodies) {
             if (kept(b.fidelity)) bodies.push_back(b);
+            else spec.notBuilt.push_back({"body " + b.name, "fidelity levels " + levels(b.fidelity)});
+        }
         std::vector<ElementSpec> elements;
-        for (const auto& e : spec.elements)
+        for (const auto& e : spec.elements) {
             if (kept(e.fidelity)) elements.push_back(e);
+            else spec.notBuilt.push_back({"element " + e.name + " (" + e.type + ")", "fidelity levels " + levels(e.fidelity)});
+        }
         spec.bodies = bodies;
         spec.elements = elements;
         const std::string why = "' is not part of fidelity level '" + spec.fidelity + "'";

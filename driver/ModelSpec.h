@@ -63,6 +63,13 @@ struct ModelSpec {
     /// bodies and elements of other levels are read, checked and dropped.
     std::vector<std::string> fidelityLevels;
     std::string fidelity;
+    /// What the file declares and the selected level leaves out:
+    /// {"body drum3", "fidelity levels 10-mass"}, for `milldyn info`.
+    struct Omitted {
+        std::string what;
+        std::string why;
+    };
+    std::vector<Omitted> notBuilt;
     std::vector<BodySpec> bodies;
     /// Uniform gravity in the ground frame [m/s^2]; zero (the default) builds
     /// no gravity force, so shafts on pins need none.

@@ -55,10 +55,19 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
             throw SpecError(e.where, e.name, err.what());
         }
     }
-    // Last, so that it sees every element's energy flow.
-    auto* meter = new EnergyMeter(scene->forces(), scene->energyFlows());
-    SimTK::Force::Custom meterForce(scene->forces(), meter);
-    scene->setEnergyMeter(meter);
+    // Only analyses that report an energy balance need the meter: its
+    // integrals are continuous states every integration step carries.
+    const std::string& analysis = spec.scenario.type;
+    if (analysis == "transient" || analysis == "coastdown_identify") {
+        // Last, so that it sees every element's energy flow.
+        auto* meter = new EnergyMeter(scene->forces(), scene->energyFlows());
+        SimTK::Force::Custom meterForce(scene->forces(), meter);
+        scene->setEnergyMeter(meter);
+        scene->note("energy meter (" + std::to_string(scene->energyFlows().size()) + " flows)",
+                    "the " + analysis + " analysis reports an energy balance");
+    } else {
+        scene->omit("energy meter", "the " + analysis + " analysis reports no energy balance");
+    }
     scene->system().realizeTopology();
     return scene;
 }

@@ -99,7 +99,7 @@ void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
     m_replay = false;
     m_replayReason.clear();
     if (allowReplay) {
-        m_replayReason = whyNoReplay(start);
+        m_replayReason = whyNoReplay(m_scene, start);
         if (m_replayReason.empty()) {
             m_replay = true;
             m_replayState = start;
@@ -164,12 +164,12 @@ const SimTK::State& Simulation::lastSample() const {
     return m_lastSampleIsCrossing ? m_crossingSample : m_integrator->getState();
 }
 
-std::string Simulation::whyNoReplay(const SimTK::State& start) const {
+std::string whyNoReplay(const Scene& scene, const SimTK::State& start) {
     SimTK::State s = start;
-    m_scene.system().realize(s, SimTK::Stage::Instance);
-    const SimTK::SimbodyMatterSubsystem& matter = m_scene.matter();
-    if (!m_scene.switchEvents().empty()) return "integrated: the run has scheduled switchings";
-    const int flows = m_scene.energyMeter() ? static_cast<int>(m_scene.energyMeter()->flows().size()) : 0;
+    scene.system().realize(s, SimTK::Stage::Instance);
+    const SimTK::SimbodyMatterSubsystem& matter = scene.matter();
+    if (!scene.switchEvents().empty()) return "integrated: the run has scheduled switchings";
+    const int flows = scene.energyMeter() ? static_cast<int>(scene.energyMeter()->flows().size()) : 0;
     if (s.getNZ() != flows) return "integrated: elements have continuous states of their own";
     // A drive prescribing the acceleration leaves q and u states but makes
     // udot known: the free mobilities are those with unknown udot.
@@ -177,10 +177,10 @@ std::string Simulation::whyNoReplay(const SimTK::State& start) const {
     const int prescribed = nu - freeU;
     // Every prescribed mobility needs a time law the replay can evaluate.
     int withLaw = 0;
-    for (const auto& p : m_scene.prescribedTrajectories())
+    for (const auto& p : scene.prescribedTrajectories())
         if (p.mobod.getNumU(s) == 1) ++withLaw;
     if (withLaw != prescribed) return "integrated: a prescribed motion has no time law the replay can evaluate";
-    const int free = freeU - s.getNUDotErr() - static_cast<int>(m_scene.kinetostaticUnknowns().size());
+    const int free = freeU - s.getNUDotErr() - static_cast<int>(scene.kinetostaticUnknowns().size());
     if (free != 0) return "integrated: " + std::to_string(free) + " free degrees of freedom";
     return "";
 }

@@ -119,13 +119,16 @@ private:
     SimTK::State m_replayState;
     double m_replayStart = 0;                       // [s]
     std::vector<std::pair<double, double>> m_trajectoryStart;  // {angle [rad], speed [rad/s]} per trajectory
-    /// Empty if the scene can be replayed from `state`, else why not.
-    std::string whyNoReplay(const SimTK::State& state) const;
     /// Places m_replayState at time t (energy integrals advanced by the
     /// trapezoid rule from the previous placement), realized to Acceleration.
     void placeReplay(double t);
     std::optional<double> runReplay(double endTime, double sampleInterval, const SampleFn& onSample);
 };
+
+/// Empty if a transient of `scene` from `start` can be replayed (see
+/// Simulation::isReplay), else why it is integrated ("integrated: ...").
+/// Counts mobilities only; Simulation also checks the placement.
+std::string whyNoReplay(const Scene& scene, const SimTK::State& start);
 
 /// Solves a scene's instantaneous unknowns in `s` (held charges' wall
 /// torques by Newton, journals' kept reactions by fixed point) to the

@@ -204,6 +204,9 @@ public:
 
     void note(const std::string& what, const std::string& why) { m_notes.push_back({what, why}); }
     const std::vector<BuildNote>& notes() const { return m_notes; }
+    /// What the builder left out, and why (`milldyn info`'s "not built").
+    void omit(const std::string& what, const std::string& why) { m_omitted.push_back({what, why}); }
+    const std::vector<BuildNote>& omitted() const { return m_omitted; }
 
 private:
     SimTK::MultibodySystem m_system;
@@ -227,6 +230,7 @@ private:
     std::vector<SpeedRelation> m_speedRelations;
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_switchables;
     std::vector<BuildNote> m_notes;
+    std::vector<BuildNote> m_omitted;
     std::vector<SketchFn> m_sketches;
     std::vector<std::function<void(SimTK::State&)>> m_initializers;
     std::vector<KinetostaticUnknown> m_kinetostaticUnknowns;

@@ -336,6 +336,28 @@ TEST_F(CliTest, InfoPrintsBodiesDegreesOfFreedomAndElements) {
         EXPECT_TRUE(contains(r.out, name)) << "'" << name << "' missing from:\n" << r.out;
 }
 
+TEST_F(CliTest, InfoSaysWhatWasNotBuiltAndWhetherTheRunIntegrates) {
+    const std::string models = std::string(MILLDYN_SOURCE_DIR) + "/models/";
+    // Roll crusher at its 2-mass level: the chain's rows are declared but
+    // not built; two free mobilities are integrated.
+    const RunResult roll = run({"info", models + "roll_crusher.yaml", "--set", "fidelity.level=2-mass"});
+    ASSERT_EQ(roll.exitCode, 0) << roll.err;
+    EXPECT_TRUE(contains(roll.out, "not built:")) << roll.out;
+    EXPECT_TRUE(contains(roll.out, "body row5 — fidelity levels 10-mass")) << roll.out;
+    EXPECT_TRUE(contains(roll.out, "time integration: integrated: 2 free degrees of freedom")) << roll.out;
+    // Planetary gear start: carrier prescribed, drums geared, charges folded
+    // into their drums: nothing to integrate.
+    const RunResult gear = run({"info", models + "planetary_gear_100x200.yaml", "--set", "use_scenario=start"});
+    ASSERT_EQ(gear.exitCode, 0) << gear.err;
+    EXPECT_TRUE(contains(gear.out, "charge charge1 (SegmentCharge, with_drum) folded into drum1")) << gear.out;
+    EXPECT_TRUE(contains(gear.out, "time integration: none: no free degrees of freedom")) << gear.out;
+    EXPECT_TRUE(contains(gear.out, "energy meter (4 flows)")) << gear.out;
+    // Its kinetostatic default builds no energy meter.
+    const RunResult kinetostatic = run({"info", models + "planetary_gear_100x200.yaml"});
+    EXPECT_TRUE(contains(kinetostatic.out, "energy meter — the kinetostatic analysis reports no energy balance"))
+        << kinetostatic.out;
+}
+
 TEST_F(CliTest, TwoRunsWithTheSameSettingsGiveIdenticalOutputs) {
     const std::vector<std::string> settings = {"run", kBurrMill, "--end-time", "0.3", "--set", "outputs.plots=false",
                                                "--quiet", "--out"};
