@@ -76,8 +76,7 @@ int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
                 worstResidual = std::max(worstResidual, std::abs(dx[i]) / std::max(1.0, std::abs(x[i] + dx[i])));
             }
         }
-        double worstChange = 0;
-        for (const auto& lagged : scene.laggedValues()) worstChange = std::max(worstChange, lagged.refresh(s));
+        const double worstChange = scene.laggedValues().empty() ? 0 : refreshLaggedValues(scene, s);
         if (!(worstChange > tolerance) && !(worstResidual > tolerance)) {
             if (!std::isfinite(worstChange) || !std::isfinite(worstResidual))
                 throw AnalysisError("kinetostatic: non-finite loads at carrier angle " +
@@ -140,8 +139,7 @@ void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
     // Kept reactions (journal loads) start consistent with the start state,
     // lagged or not: a lagged load of 0 would give the first step no friction.
     for (int k = 0; !m_scene.laggedValues().empty(); ++k) {
-        double change = 0;
-        for (const auto& v : m_scene.laggedValues()) change = std::max(change, v.refresh(state));
+        const double change = refreshLaggedValues(m_scene, state);
         if (!(change > kLaggedTolerance)) break;
         if (k >= 50) throw AnalysisError("kept reactions do not converge at the start");
     }
@@ -364,9 +362,7 @@ bool Simulation::makeLaggedValuesConsistent() {
     double change = 0;
     bool changed = false;
     for (int k = 0;; ++k) {
-        change = 0;
-        for (const auto& v : m_scene.laggedValues())
-            if (v.eachStep) change = std::max(change, v.refresh(s));
+        change = refreshLaggedValues(m_scene, s, true);
         if (!(change > kLaggedTolerance)) break;
         changed = true;
         if (k >= 50)

@@ -51,9 +51,8 @@ double JournalFriction::calcPower(const State& s) const {
     return calcTorque(s) * m_body.getOneU(s, MobilizerUIndex(0));
 }
 
-double JournalFriction::refreshKeptLoad(State& s) const {
-    m_matter.getSystem().realize(s, Stage::Acceleration);
-    const double now = calcReaction(s), kept = getLoad(s);
+double JournalFriction::keepLoad(State& s, double now) const {
+    const double kept = getLoad(s);
     const double t = s.getTime();
     Value<Vec4>::updDowncast(m_matter.updDiscreteVariable(s, m_keptLoad)) = Vec4(now, t, now, t);
     return std::abs(now - kept) / std::max(now, 1e-300);
@@ -96,7 +95,8 @@ void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
                          [impl](const State& s) { return impl->calcPower(s); }});
     scene.addLaggedValue({spec.name + ".load", p.coupling == ReactionCoupling::Iterated,
-                          [impl](State& s) { return impl->refreshKeptLoad(s); }});
+                          [impl](const State& s) { return impl->calcReaction(s); },
+                          [impl](State& s, double load) { return impl->keepLoad(s, load); }});
     scene.note("force " + spec.name + " (JournalFriction, " + spec.text("reaction") + ")",
                "journal of " + body->name + " on its parent, load from Simbody's reaction");
 }

@@ -71,8 +71,9 @@ public:
     double calcTorque(const SimTK::State& s) const;
     /// Power it dissipates, M·u [W] >= 0.
     double calcPower(const SimTK::State& s) const;
-    /// Sets the kept reaction to the current one; returns the relative change.
-    double refreshKeptLoad(SimTK::State& s) const;
+    /// Sets the kept reaction to `load` [N] (the current reaction, read by
+    /// the caller from a realized state); returns the relative change.
+    double keepLoad(SimTK::State& s, double load) const;
 
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                    SimTK::Vector& mobilityForces) const override;

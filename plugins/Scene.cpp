@@ -2,6 +2,7 @@
 
 #include "plugins/MobilizerReactions.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace milldyn {
@@ -90,6 +91,22 @@ std::vector<std::string> mobilityNames(const Scene& scene, const SimTK::State& s
 
 double pinAngle(const SimTK::State& state, const SimTK::MobilizedBody& body) {
     return body.getOneQ(state, SimTK::MobilizerQIndex(0));
+}
+
+double refreshLaggedValues(const Scene& scene, SimTK::State& state, bool eachStepOnly) {
+    scene.system().realize(state, SimTK::Stage::Acceleration);
+    // Read all before keeping any: keeping one invalidates the realization.
+    std::vector<double> now;
+    for (const auto& v : scene.laggedValues())
+        if (v.eachStep || !eachStepOnly) now.push_back(v.current(state));
+    double change = 0;
+    std::size_t i = 0;
+    for (const auto& v : scene.laggedValues())
+        if (v.eachStep || !eachStepOnly) {
+            const double c = v.keep(state, now[i++]);
+            change = std::isnan(c) || std::isnan(change) ? NAN : std::max(change, c);
+        }
+    return change;
 }
 
 }  // namespace milldyn

@@ -184,14 +184,17 @@ public:
     const std::vector<KinetostaticUnknown>& kinetostaticUnknowns() const { return m_kinetostaticUnknowns; }
 
     /// A value an element keeps from the last accepted step (a journal's
-    /// reaction). `refresh` realizes the state, copies the current value
-    /// into the kept one and returns the relative change; kinetostatic
-    /// analyses iterate it to consistency at each instant, and so does the
-    /// Simulation after every step when `eachStep` is set.
+    /// reaction). `current` reads what it should become from a state
+    /// realized to Acceleration; `keep` stores that and returns the relative
+    /// change. Kinetostatic analyses and replays iterate all of them to
+    /// consistency at each instant, and so does the Simulation after every
+    /// step for those with `eachStep` set (refreshLaggedValues: one
+    /// realization per sweep over all of them).
     struct LaggedValue {
         std::string name;
         bool eachStep = false;
-        std::function<double(SimTK::State&)> refresh;
+        std::function<double(const SimTK::State&)> current;
+        std::function<double(SimTK::State&, double)> keep;
     };
     void addLaggedValue(LaggedValue v) { m_laggedValues.push_back(std::move(v)); }
     const std::vector<LaggedValue>& laggedValues() const { return m_laggedValues; }
@@ -238,6 +241,12 @@ private:
     std::vector<PrescribedTrajectory> m_trajectories;
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_excitations;
 };
+
+/// One fixed-point sweep over the scene's lagged values (only the eachStep
+/// ones if `eachStepOnly`): realizes `state` to Acceleration once, reads
+/// every current value, then keeps them all. Returns the largest relative
+/// change (NaN if a value is not finite).
+double refreshLaggedValues(const Scene& scene, SimTK::State& state, bool eachStepOnly = false);
 
 /// The angular speed of a pin-jointed body about its axis [rad/s].
 double pinSpeed(const SimTK::State& state, const SimTK::MobilizedBody& body);
