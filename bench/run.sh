@@ -19,7 +19,8 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
 fi
 cmake -S . -B build -DMILLDYN_BENCH=ON >/dev/null
-cmake --build build -j"$(nproc)" --target bench_odeint_burr bench_odeint_roll bench_milldyn bench_bare_simbody
+cmake --build build -j"$(nproc)" --target bench_odeint_burr bench_odeint_roll bench_milldyn bench_bare_simbody \
+  bench_kinetostatic
 echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
 out=$(mktemp)
 build/bench_odeint_burr 1e-12 1 | head -n 1 | sed 's/odeint_dopri5/reference/' > "$out"
@@ -36,4 +37,9 @@ build/bench_odeint_roll "$tol" "$repeats" >> "$out"
 build/bench_bare_simbody roll "$tol" "$repeats" >> "$out"
 build/bench_milldyn roll "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/report.py "$out" "motor speed (2.5, 5, 10 s)"
+# Kinetostatic throughput (bench/kinetostatic.cpp): configurations/s per
+# core of the planetary-gear `turn` scenario and of its floor.
+out=$(mktemp)
+build/bench_kinetostatic 2000 3 > "$out"
+/usr/bin/python3 bench/report.py "$out"
 echo "# done $(date -u '+%H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg)"
