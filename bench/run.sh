@@ -19,20 +19,20 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
 fi
 cmake -S . -B build -DMILLDYN_BENCH=ON >/dev/null
-cmake --build build -j"$(nproc)" --target bench_odeint_burr bench_odeint_roll bench_milldyn bench_bare_simbody \
+cmake --build build -j"$(nproc)" --target bench_odeint bench_milldyn bench_bare_simbody \
   bench_kinetostatic
 echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
 out=$(mktemp)
-build/bench_odeint_burr 1e-12 1 | head -n 1 | sed 's/odeint_dopri5/reference/' > "$out"
-build/bench_odeint_burr "$tol" "$repeats" >> "$out"
+build/bench_odeint burr 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
+build/bench_odeint burr "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/scipy_burr.py "$tol" 3 >> "$out"
 build/bench_bare_simbody burr "$tol" "$repeats" >> "$out"
 build/bench_milldyn burr "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/report.py "$out"
 # The roll crusher 2-mass level, rows in phase (bench/roll_equations.h).
 out=$(mktemp)
-build/bench_odeint_roll 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
-build/bench_odeint_roll "$tol" "$repeats" >> "$out"
+build/bench_odeint roll 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
+build/bench_odeint roll "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/scipy_roll.py "$tol" 3 >> "$out"
 build/bench_bare_simbody roll "$tol" "$repeats" >> "$out"
 build/bench_milldyn roll "$tol" "$repeats" >> "$out"
