@@ -1,7 +1,21 @@
 """Turns the JSON lines of bench/run.sh into a table: error against the
-reference, wall time, and ratios to Odeint dopri5 and the best SciPy method."""
+reference, wall time, realizations (right-hand-side calls for Odeint dopri5
+and SciPy), wall time per realization, and ratios to
+Odeint dopri5, the best SciPy method and bare Simbody with the same
+integrator (milldyn_X / simbody_X: milldyn's own overhead)."""
 import json, sys
-rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip()]
+rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
+if "configurations_per_s" in rows[0]:
+    # bench_kinetostatic: throughput, realizations per configuration, floor.
+    print("| model | level | configurations/s | Acceleration realizations / configuration | µs / realization "
+          "| floor: configurations/s (1 realization each) | / floor |")
+    print("|---|---|---|---|---|---|---|")
+    for r in rows:
+        n = r["acceleration_realizations_per_configuration"]
+        print("| %s | %s | %.4g | %.3g | %.3g | %.4g | %.3g |" % (
+            r["model"], r["level"], r["configurations_per_s"], n, 1e6 / (r["configurations_per_s"] * n),
+            r["floor_configurations_per_s"], r["floor_configurations_per_s"] / r["configurations_per_s"]))
+    sys.exit(0)
 what = sys.argv[2] if len(sys.argv) > 2 else "omega2 (0.5, 0.85, 4 s)"
 ref = next(r for r in rows if r["method"] == "reference")["omega2"]
 rows = [r for r in rows if r["method"] != "reference"]
@@ -9,8 +23,14 @@ for r in rows:
     r["error"] = max(abs(a - b) / abs(b) for a, b in zip(r["omega2"], ref))
 odeint = next(r for r in rows if r["method"] == "odeint_dopri5")["wall_s"]
 scipy_best = min(r["wall_s"] for r in rows if r["method"].startswith("scipy_"))
-print("| method | tolerance | max rel. error of %s | wall [ms] | / odeint dopri5 | / best SciPy |" % what)
-print("|---|---|---|---|---|---|")
+bare = {r["method"][len("simbody_"):]: r["wall_s"] for r in rows if r["method"].startswith("simbody_")}
+print("| method | tolerance | max rel. error of %s | wall [ms] | realizations (rhs calls) | µs each "
+      "| / odeint dopri5 | / best SciPy | / bare Simbody |" % what)
+print("|---|---|---|---|---|---|---|---|---|")
 for r in rows:
-    print("| %s | %g | %.2g | %.3g | %.3g | %.3g |" % (r["method"], r["tolerance"], r["error"], 1e3 * r["wall_s"],
-                                                    r["wall_s"] / odeint, r["wall_s"] / scipy_best))
+    integrator = r["method"][len("milldyn_"):] if r["method"].startswith("milldyn_") else None
+    print("| %s | %g | %.2g | %.3g | %s | %s | %.3g | %.3g | %s |" % (
+        r["method"], r["tolerance"], r["error"], 1e3 * r["wall_s"],
+        r.get("realizations", "–"), "%.3g" % (1e6 * r["wall_s"] / r["realizations"]) if r.get("realizations") else "–",
+        r["wall_s"] / odeint, r["wall_s"] / scipy_best,
+        "%.3g" % (r["wall_s"] / bare[integrator]) if integrator in bare else "–"))

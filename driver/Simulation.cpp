@@ -49,26 +49,33 @@ int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
     const SimTK::MultibodySystem& system = scene.system();
     const auto& unknowns = scene.kinetostaticUnknowns();
     const std::size_t n = unknowns.size();
+    // The residuals (accelerations) are linear in the torques, with a
+    // Jacobian set by the configuration alone (mass matrix and constraints;
+    // the journals' kept loads only shift the residuals): it is computed
+    // once per configuration, n realizations, and each outer iteration
+    // costs one realization for the residuals and one Newton step.
+    Eigen::FullPivLU<Eigen::MatrixXd> jacobian;
     for (int iter = 1; iter <= 100; ++iter) {
         double worstResidual = 0;
         if (n > 0) {
-            // The residuals (accelerations) are linear in the torques: one
-            // Newton step with a finite-difference Jacobian solves them.
             Eigen::VectorXd x(n), r0(n);
             system.realize(s, SimTK::Stage::Acceleration);
             for (std::size_t i = 0; i < n; ++i) {
                 x[i] = unknowns[i].get(s);
                 r0[i] = unknowns[i].residual(s);
             }
-            Eigen::MatrixXd J(n, n);
-            for (std::size_t j = 0; j < n; ++j) {
-                const double h = 1e-3 * std::max(1.0, std::abs(x[j]));
-                unknowns[j].set(s, x[j] + h);
-                system.realize(s, SimTK::Stage::Acceleration);
-                for (std::size_t i = 0; i < n; ++i) J(i, j) = (unknowns[i].residual(s) - r0[i]) / h;
-                unknowns[j].set(s, x[j]);
+            if (iter == 1) {
+                Eigen::MatrixXd J(n, n);
+                for (std::size_t j = 0; j < n; ++j) {
+                    const double h = 1e-3 * std::max(1.0, std::abs(x[j]));
+                    unknowns[j].set(s, x[j] + h);
+                    system.realize(s, SimTK::Stage::Acceleration);
+                    for (std::size_t i = 0; i < n; ++i) J(i, j) = (unknowns[i].residual(s) - r0[i]) / h;
+                    unknowns[j].set(s, x[j]);
+                }
+                jacobian.compute(J);
             }
-            const Eigen::VectorXd dx = J.fullPivLu().solve(-r0);
+            const Eigen::VectorXd dx = jacobian.solve(-r0);
             for (std::size_t i = 0; i < n; ++i) {
                 unknowns[i].set(s, x[i] + dx[i]);
                 // Converged when Newton's correction is round-off on the
