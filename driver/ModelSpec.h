@@ -51,6 +51,16 @@ struct IntegratorSpec {
 struct OutputSpec {
     double sampleInterval = 1e-3;  ///< [s] between CSV rows
     bool plots = true;
+    /// `columns:` the outputs wanted, by element name (all its outputs) or
+    /// output name; empty: all. Output-only elements nobody names are not
+    /// built and other elements' unnamed outputs are not evaluated; the
+    /// outputs the analysis itself summarises (drive, load, coupling
+    /// torques) and the bodies' angles and speeds are always kept.
+    std::vector<std::string> columns;
+    std::vector<SourceLocation> columnWhere;  ///< where each column was named
+    /// `energy_balance:` build the energy meter for analyses that report
+    /// an energy balance (its integrals are states every step carries).
+    bool energyBalance = true;
     SourceLocation where;
 };
 

@@ -3,11 +3,17 @@
 #include "plugins/ElementRegistry.h"
 #include "plugins/EnergyMeter.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace milldyn {
 namespace {
 constexpr double kPlaceholderMass = 1.0;  // [kg]
+
+std::string suggestion(const std::string& word, const std::vector<std::string>& names) {
+    const std::string near = nearestName(word, names);
+    return near.empty() ? "" : " (did you mean '" + near + "'?)";
+}
 }  // namespace
 
 std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
@@ -46,19 +52,56 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
         scene->note("gravity " + std::to_string(g.norm()) + " m/s^2", "gravity: in the model file");
     }
     const ElementRegistry& registry = ElementRegistry::instance();
+    const std::vector<std::string>& columns = spec.outputs.columns;
+    // A column names an element (all its outputs) or one output "ELEMENT.x".
+    auto named = [&](const std::string& output) {
+        for (const auto& c : columns)
+            if (output == c || output.compare(0, c.size() + 1, c + ".") == 0) return true;
+        return false;
+    };
     for (const auto& e : spec.elements) {
         const ElementType* type = registry.find(e.type);
         if (!type) throw SpecError(e.where, e.name + ".type", "unknown element type '" + e.type + "'");
+        const bool elementNamed = std::any_of(columns.begin(), columns.end(), [&](const std::string& c) {
+            return c == e.name || c.compare(0, e.name.size() + 1, e.name + ".") == 0;
+        });
+        if (type->schema.outputOnly && !columns.empty() && !elementNamed) {
+            scene->omit("output " + e.name + " (" + e.type + ")", "outputs.columns names none of its outputs");
+            continue;
+        }
         try {
             type->build(e, *scene);
         } catch (const std::invalid_argument& err) {
             throw SpecError(e.where, e.name, err.what());
         }
     }
+    if (!columns.empty()) {
+        // Every column must name something: a typo would otherwise drop an
+        // output silently.
+        for (std::size_t i = 0; i < columns.size(); ++i) {
+            bool found = spec.findElement(columns[i]) != nullptr;
+            for (const auto& p : scene->probes()) found = found || p.name == columns[i];
+            if (!found) {
+                std::vector<std::string> names;
+                for (const auto& e : spec.elements) names.push_back(e.name);
+                for (const auto& p : scene->probes()) names.push_back(p.name);
+                throw SpecError(spec.outputs.columnWhere[i], "outputs.columns",
+                                "no element or output named '" + columns[i] + "'" + suggestion(columns[i], names));
+            }
+        }
+        // The analyses' summaries read the outputs with a role (drive, load,
+        // coupling torques, speeds): those stay whatever the columns say.
+        const std::size_t dropped =
+            scene->retainProbes([&](const Probe& p) { return p.role != ProbeRole::Generic || named(p.name); });
+        if (dropped > 0)
+            scene->omit(std::to_string(dropped) + " outputs of built elements", "not named in outputs.columns");
+    }
     // Only analyses that report an energy balance need the meter: its
     // integrals are continuous states every integration step carries.
     const std::string& analysis = spec.scenario.type;
-    if (analysis == "transient" || analysis == "coastdown_identify") {
+    if (!spec.outputs.energyBalance) {
+        scene->omit("energy meter", "outputs.energy_balance is false");
+    } else if (analysis == "transient" || analysis == "coastdown_identify") {
         // Last, so that it sees every element's energy flow.
         auto* meter = new EnergyMeter(scene->forces(), scene->energyFlows());
         SimTK::Force::Custom meterForce(scene->forces(), meter);

@@ -17,7 +17,10 @@ namespace milldyn {
 
 /// Bump when ElementSpec, Scene or this registry change incompatibly; a
 /// plugin built against another value is refused.
-constexpr int kPluginAbiVersion = 3;  // 2: SourceLocation::includedFrom; 3: Scene::addSketch
+// 2: SourceLocation::includedFrom; 3: Scene::addSketch; 4: Scene's shared
+// reactions, prescribed trajectories, omit(), LaggedValue current/keep,
+// ElementSchema::outputOnly.
+constexpr int kPluginAbiVersion = 4;
 
 /// Builds one element into a scene. Throws SpecError for input the schema
 /// could not catch, std::invalid_argument from element constructors.

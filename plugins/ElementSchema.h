@@ -128,6 +128,9 @@ struct ElementSchema {
     std::string doc;
     std::vector<ParamSchema> params;
     std::function<void(const ElementSpec&)> crossCheck;
+    /// Output only (JointReaction): it changes nothing in the motion, so a
+    /// model whose `outputs.columns` names none of its outputs skips it.
+    bool outputOnly = false;
 
     const ParamSchema* find(const std::string& key) const;
 };

@@ -43,6 +43,7 @@ void registerJointReaction(ElementRegistry& registry) {
     s.type = "JointReaction";
     s.doc = "Output only: the bearing reaction of a body's joint (force of the parent on the body, ground axes).";
     s.params = {ParamSchema::body("body", "body whose joint reaction is reported")};
+    s.outputOnly = true;
     registry.add({std::move(s), buildJointReaction});
 }
 

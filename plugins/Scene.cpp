@@ -22,6 +22,15 @@ const MobilizerReactions& Scene::mobilizerReactions() {
     return *m_reactions;
 }
 
+std::size_t Scene::retainProbes(const std::function<bool(const Probe&)>& keep) {
+    const std::size_t before = m_probes.size();
+    std::vector<Probe> kept;
+    for (auto& p : m_probes)
+        if (keep(p)) kept.push_back(std::move(p));
+    m_probes = std::move(kept);
+    return before - m_probes.size();
+}
+
 const SceneBody* Scene::findBody(const std::string& name) const {
     for (const auto& b : m_bodies)
         if (b.name == name) return &b;

@@ -95,6 +95,9 @@ public:
     const MobilizerReactions& mobilizerReactions();
 
     void addProbe(Probe probe) { m_probes.push_back(std::move(probe)); }
+    /// Drops the probes `keep` rejects (outputs nobody asked for); returns
+    /// how many were dropped.
+    std::size_t retainProbes(const std::function<bool(const Probe&)>& keep);
     const std::vector<Probe>& probes() const { return m_probes; }
 
     void addEnergyFlow(EnergyFlow f) { m_energyFlows.push_back(std::move(f)); }
