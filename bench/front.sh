@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The error-cost front of every shipped transient scene (issue #7, part 1),
 # on demand, never a test:
-#   bench/front.sh [SCENE...]     scenes: burr roll planetary_gear planetary_belt (default: all),
+#   bench/front.sh [SCENE...]     scenes: burr burr_3p2kW_feed roll planetary_gear
+#                                 planetary_gear_dynamic planetary_belt (default: all),
 #                                 planetary_gear_iterated (on request: slow)
 # Writes bench/results/front_SCENE.csv (one row per run) and regenerates
 # docs/speed-accuracy.md's tables and docs/images/front_SCENE.png
@@ -17,7 +18,7 @@ cmake -S . -B "$BUILD" -DMILLDYN_BENCH=ON >/dev/null
 cmake --build "$BUILD" -j2 --target bench_front >/dev/null
 mkdir -p bench/results
 scenes=("$@")
-[ ${#scenes[@]} -gt 0 ] || scenes=(burr roll planetary_gear planetary_belt)
+[ ${#scenes[@]} -gt 0 ] || scenes=(burr burr_3p2kW_feed roll planetary_gear planetary_gear_dynamic planetary_belt)
 # Integrators and accuracies: all (CPodesAdams too) at 1e-2 ... 1e-10,
 # trimmed where a scene is slow (said in docs/speed-accuracy.md).
 ALL_ACC=1e-2,1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10
@@ -34,20 +35,37 @@ for scene in "${scenes[@]}"; do
         --columns motor_shaft.speed,millstone.speed,belt.torque \
         --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-11" \
         --accuracies $ALL_ACC > "$out" ;;
+    burr_3p2kW_feed)  # the 3.2 kW mill with feed 130-150 kg/h: do the 5.5 kW presets hold?
+      "$BUILD"/bench_front models/burr_mill_3p2kW_feed130_150.yaml --budget "$BUDGET" \
+        --set "scenario.end_time=4 s" --set "elements.motor.switch_off_time=100 s" --set outputs.plots=false \
+        --columns motor_shaft.speed,millstone.speed,belt.torque \
+        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-11" \
+        --accuracies $ALL_ACC > "$out" ;;
     roll)  # 10 s of crushing from steady running; 2-mass vs 10-mass
       "$BUILD"/bench_front models/roll_crusher.yaml --budget "$BUDGET" --set outputs.plots=false \
         --columns motor.speed,reducer.torque \
         --ref "fidelity.level=10-mass;integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10" \
         --variant "10-mass:fidelity.level=10-mass" --variant "2-mass:fidelity.level=2-mass" \
         --accuracies $ALL_ACC > "$out" ;;
-    planetary_gear)  # the start, trimmed to its first 1 s (the torque peak)
+    planetary_gear)  # the start, trimmed to its first 1 s (the torque peak). With rigid
+      # charges it has no free degree of freedom: milldyn replays it (no
+      # integration, journal loads consistent at each instant: the
+      # reference); the integrated variants measure what integrating costs.
       "$BUILD"/bench_front models/planetary_gear_100x200.yaml --budget "$BUDGET" \
         --set use_scenario=start --set "scenarios.start.end_time=1 s" --set outputs.plots=false \
         --columns drive.torque,friction_A.torque,friction_B1.torque \
-        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10;integrator.max_step=1e-5 s;$(reaction lagged)" \
-        --variant "extrapolated:$(reaction extrapolated)" --variant "lagged:$(reaction lagged)" \
-        --variant "lagged_max1e-4:integrator.max_step=1e-4 s;$(reaction lagged)" \
+        --ref "scenarios.start.zero_dof=replay" \
+        --variant "extrapolated:scenarios.start.zero_dof=integrate;$(reaction extrapolated)" \
+        --variant "lagged:scenarios.start.zero_dof=integrate;$(reaction lagged)" \
+        --variant "lagged_max1e-4:scenarios.start.zero_dof=integrate;integrator.max_step=1e-4 s;$(reaction lagged)" \
         --accuracies $SLOW_ACC > "$out" ;;
+    planetary_gear_dynamic)  # charges on their own pins, dragged by the wall: integrated
+      "$BUILD"/bench_front models/planetary_gear_100x200.yaml --budget "$BUDGET" \
+        --set use_scenario=start --set "scenarios.start.end_time=1 s" --set outputs.plots=false \
+        --set fidelity.level=dynamic_charge \
+        --columns drive.torque,charge1.lag,friction_B1.torque \
+        --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-11" \
+        --variant "extrapolated:$(reaction extrapolated)" --accuracies $SLOW_ACC > "$out" ;;
     planetary_gear_iterated)  # iterated reactions (CPodes with them: minutes per run, see docs)
       "$BUILD"/bench_front models/planetary_gear_100x200.yaml --budget "$BUDGET" \
         --set use_scenario=start --set "scenarios.start.end_time=1 s" --set outputs.plots=false \

@@ -206,13 +206,14 @@ void Simulation::placeReplay(double t) {
         laws[i].mobod.setOneU(s, SimTK::MobilizerUIndex(0), motion.second);
     }
     for (const auto& init : m_scene.initializers()) init(s);
-    m_extra.realizations += solveInstant(m_scene, s, kLaggedTolerance);
+    const int realizedBefore = system.getNumRealizationsOfThisStage(SimTK::Stage::Acceleration);
+    solveInstant(m_scene, s, kLaggedTolerance);
     if (zdotBefore.size() > 0) {
         const SimTK::Vector zdot = s.getZDot();
         s.updZ() += 0.5 * dt * (zdotBefore + zdot);
         system.realize(s, SimTK::Stage::Acceleration);
-        ++m_extra.realizations;
     }
+    m_extra.realizations += system.getNumRealizationsOfThisStage(SimTK::Stage::Acceleration) - realizedBefore;
     ++m_extra.steps;
 }
 

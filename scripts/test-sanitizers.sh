@@ -11,7 +11,7 @@ flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fsanitize-r
 # MPI's own MPI_Init allocations, which are not ours to suppress blindly. Not
 # yet tried with MPI on; the MPI code is thin (driver/SweepMpi.cpp).
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS="$flags" \
-  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DMILLDYN_MPI=OFF >/dev/null
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DMILLDYN_MPI=OFF -DMILLDYN_TEST_TIMEOUT_SCALE=10 >/dev/null
 cmake --build build-asan -j"$(nproc)"
 supp="$PWD/tests/sanitizers"
 cd build-asan
