@@ -27,6 +27,28 @@ constexpr double kLaggedTolerance = 1e-12;
 // Fixed-step integrators need a step; used when max_step is not given [s].
 constexpr double kDefaultFixedStep = 1e-4;
 
+/// Cubic Hermite interpolation between two step ends (values y, derivatives
+/// f), the same order as Simbody's own interpolation of report times.
+void interpolateHermite(double t0, const SimTK::Vector& y0, const SimTK::Vector& f0, double t1,
+                        const SimTK::Vector& y1, const SimTK::Vector& f1, double t, SimTK::Vector& y) {
+    const double h = t1 - t0, s = (t - t0) / h, s2 = s * s, s3 = s2 * s;
+    const double h00 = 2 * s3 - 3 * s2 + 1, h10 = (s3 - 2 * s2 + s) * h, h01 = 3 * s2 - 2 * s3, h11 = (s3 - s2) * h;
+    for (int i = 0; i < y.size(); ++i) y[i] = h00 * y0[i] + h10 * f0[i] + h01 * y1[i] + h11 * f1[i];
+}
+
+/// Copies every discrete variable (kept journal loads, switch flags) of
+/// `from` into `to`, a State of the same System: what a sample between two
+/// step ends takes from the step's end, without a whole State copy.
+void copyDiscreteVariables(const SimTK::State& from, SimTK::State& to) {
+    // Only those that may change while integrating (they invalidate Time or
+    // a later stage: loads, switches). Model and Instance ones are the
+    // system's structure; setting one would undo the realization of `to`.
+    for (SimTK::SubsystemIndex i(0); i < from.getNumSubsystems(); ++i)
+        for (SimTK::DiscreteVariableIndex k(0); from.hasDiscreteVar({i, k}); ++k)
+            if (from.getDiscreteVarInvalidatesStage(i, k) >= SimTK::Stage::Time)
+                to.setDiscreteVariable(i, k, from.getDiscreteVariable(i, k));
+}
+
 }  // namespace
 
 std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::System& system, const std::string& name) {
@@ -160,6 +182,15 @@ void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
     m_integrator->setReturnEveryInternalStep(true);
     m_integrator->initialize(state);
     m_integrator->resetAllStatistics();
+    // Without constraints or prescribed q, u a sample is the step's
+    // interpolant and needs no projection: the Simulation interpolates into
+    // one State it keeps (sampleByHermite) instead of Simbody's report-time
+    // interpolation, which copies a whole State per sample (72 % of a burr
+    // start's instructions at 2 ms sampling).
+    const SimTK::State& s = m_integrator->getState();
+    m_sampleByHermite = s.getNQErr() == 0 && s.getNUErr() == 0 && s.getNUDotErr() == 0 &&
+                        static_cast<int>(m_scene.matter().getFreeQIndex(s).size()) == s.getNQ() &&
+                        static_cast<int>(m_scene.matter().getFreeUIndex(s).size()) == s.getNU();
 }
 
 const SimTK::State& Simulation::state() const { return m_replay ? m_replayState : m_integrator->getState(); }
@@ -300,24 +331,61 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
     auto watched = [watch](const SimTK::State& st) { return watch->value(st) - watch->threshold; };
     double lastWatch = watch ? watched(lastStepEnd) : 0;
 
+    // Own sampling (m_sampleByHermite): the integrator returns at its step
+    // ends only; the samples inside a step are interpolated from the last
+    // step end (time, y, ẏ) and this one into m_sample.
+    const bool own = m_sampleByHermite;
+    double tPrev = t0;
+    SimTK::Vector yPrev, ydotPrev;
+    auto rememberStepEnd = [&]() {
+        const SimTK::State& e = integ.getState();
+        system.realize(e, SimTK::Stage::Acceleration);
+        tPrev = e.getTime();
+        yPrev = e.getY();
+        ydotPrev = e.getYDot();
+    };
+    if (own) {
+        m_sample = integ.getState();  // one copy per run; its discrete part is refreshed per step
+        rememberStepEnd();
+    }
+    // Emits the samples strictly before `until` that fall in the step just taken.
+    auto emitInterpolated = [&](double until) {
+        const SimTK::State& end = integ.getState();
+        bool discreteCopied = false;
+        for (;;) {
+            const double ts = std::min(t0 + sampleIndex * sampleInterval, endTime);
+            if (!(ts < until && ts > tPrev)) break;
+            if (!discreteCopied) {
+                copyDiscreteVariables(end, m_sample);
+                discreteCopied = true;
+            }
+            interpolateHermite(tPrev, yPrev, ydotPrev, end.getTime(), end.getY(), end.getYDot(), ts, m_sample.updY());
+            m_sample.setTime(ts);
+            emit(m_sample);
+            ++sampleIndex;
+        }
+    };
+
     while (true) {
-        const double nextSample = std::min(t0 + sampleIndex * sampleInterval, endTime);
         const double hardStop = nextSwitch < switchTimes.size() ? switchTimes[nextSwitch] : endTime;
         SimTK::Integrator::SuccessfulStepStatus status;
         try {
-            status = integ.stepTo(std::min(nextSample, hardStop), hardStop);
+            status = integ.stepTo(own ? hardStop : std::min(std::min(t0 + sampleIndex * sampleInterval, endTime),
+                                                            hardStop),
+                                  hardStop);
         } catch (const std::exception& e) {
             throw AnalysisError("integrator " + m_settings.name + " failed near " + timeText(integ.getTime()) +
                                 ": " + std::string(e.what()).substr(0, 300));
         }
         const SimTK::State& s = integ.getState();
-        system.realize(s, SimTK::Stage::Velocity);
+        system.realize(s, own ? SimTK::Stage::Acceleration : SimTK::Stage::Velocity);
 
         if (watch && s.getTime() >= watch->notBefore) {
             const double value = watched(s);
             if (lastWatch > 0 && value <= 0) {
                 m_crossingSample = locateCrossing(lastStepEnd, s.getTime(), *watch);
                 const SimTK::State& crossing = m_crossingSample;
+                if (own) emitInterpolated(crossing.getTime());
                 emit(crossing);
                 m_lastSampleIsCrossing = true;
                 const double rate = watch->rate(crossing);
@@ -327,6 +395,8 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             }
             if (!integ.isStateInterpolated()) lastWatch = value;
         }
+        if (own) emitInterpolated(s.getTime());
+        const double nextSample = std::min(t0 + sampleIndex * sampleInterval, endTime);
         if (!integ.isStateInterpolated()) {
             makeLaggedValuesConsistent();  // may restart: s then is the consistent state
             if (watch) lastStepEnd = integ.getState();
@@ -356,6 +426,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
                 lastWatch = watched(lastStepEnd);
             }
         }
+        if (own) rememberStepEnd();
         if (status == SimTK::Integrator::EndOfSimulation) return std::nullopt;
     }
 }

@@ -101,6 +101,8 @@ private:
     RunStatistics m_extra;  // work done by crossing searches
     SimTK::State m_crossingSample;
     bool m_lastSampleIsCrossing = false;
+    bool m_sampleByHermite = false;  // see initialize()
+    SimTK::State m_sample;           // the interpolated sample (own sampling)
     std::vector<double> m_probeValues;
 
     /// Fills m_probeValues; throws AnalysisError naming the body or element
