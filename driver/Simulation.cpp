@@ -125,6 +125,7 @@ Simulation::Simulation(const Scene& scene, const IntegratorSpec& settings)
 
 void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
     m_replay = false;
+    m_replayRefused = false;
     m_replayReason.clear();
     if (allowReplay) {
         m_replayReason = whyNoReplay(m_scene, start);
@@ -154,6 +155,7 @@ void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
                 return;
             }
             m_replay = false;
+            m_replayRefused = true;
             m_extra = RunStatistics();
             m_extra.integrator = m_settings.name;
             m_extra.accuracy = m_settings.accuracy;

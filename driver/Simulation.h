@@ -58,6 +58,10 @@ public:
     /// summed by the trapezoid rule over the samples. No integrator runs.
     bool isReplay() const { return m_replay; }
     const std::string& replayReason() const { return m_replayReason; }
+    /// The reason when it is news for the run's summary: a replay, or a
+    /// replay that the count allowed and the placement refused; empty when
+    /// the scene simply has free motion (`milldyn info` says so).
+    std::string replayNote() const { return m_replay || m_replayRefused ? m_replayReason : std::string(); }
 
     using SampleFn = std::function<void(const SimTK::State&)>;
 
@@ -117,6 +121,7 @@ private:
 
     // Replay (no free degrees of freedom).
     bool m_replay = false;
+    bool m_replayRefused = false;
     std::string m_replayReason;
     SimTK::State m_replayState;
     double m_replayStart = 0;                       // [s]

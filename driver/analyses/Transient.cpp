@@ -75,7 +75,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         sim.run(endTime, spec.outputs.sampleInterval, onSample);
     }
     result.statistics = sim.statistics();
-    if (!sim.replayReason().empty()) result.notes.push_back(sim.replayReason());
+    if (!sim.replayNote().empty()) result.notes.push_back(sim.replayNote());
     const SimTK::State last = sim.lastSample();
     if (!steadyCopied && !(switchTime < sim.lastSample().getTime())) steady = last;
 
