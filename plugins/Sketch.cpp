@@ -2,25 +2,28 @@
 
 namespace milldyn {
 
-void Sketch::circle(const std::string& role, double x, double y, double radius, const std::string& label) {
-    Shape s;
-    s.kind = Kind::Circle;
+namespace {
+/// A shape of `kind` at (x, y) [m] with the rest left zero for the caller.
+Sketch::Shape start(Sketch::Kind kind, const std::string& role, const std::string& label, double x, double y) {
+    Sketch::Shape s;
+    s.kind = kind;
     s.role = role;
     s.label = label;
     s.x = x;
     s.y = y;
+    return s;
+}
+}  // namespace
+
+void Sketch::circle(const std::string& role, double x, double y, double radius, const std::string& label) {
+    Shape s = start(Kind::Circle, role, label, x, y);
     s.radius = radius;
     m_shapes.push_back(s);
 }
 
 void Sketch::segment(const std::string& role, double x, double y, double radius, double direction, double halfAngle,
                      const std::string& label) {
-    Shape s;
-    s.kind = Kind::Segment;
-    s.role = role;
-    s.label = label;
-    s.x = x;
-    s.y = y;
+    Shape s = start(Kind::Segment, role, label, x, y);
     s.radius = radius;
     s.direction = direction;
     s.halfAngle = halfAngle;
@@ -28,24 +31,14 @@ void Sketch::segment(const std::string& role, double x, double y, double radius,
 }
 
 void Sketch::line(const std::string& role, double x1, double y1, double x2, double y2, const std::string& label) {
-    Shape s;
-    s.kind = Kind::Line;
-    s.role = role;
-    s.label = label;
-    s.x = x1;
-    s.y = y1;
+    Shape s = start(Kind::Line, role, label, x1, y1);
     s.x2 = x2;
     s.y2 = y2;
     m_shapes.push_back(s);
 }
 
 void Sketch::arrow(const std::string& role, double x, double y, double fx, double fy, const std::string& label) {
-    Shape s;
-    s.kind = Kind::Arrow;
-    s.role = role;
-    s.label = label;
-    s.x = x;
-    s.y = y;
+    Shape s = start(Kind::Arrow, role, label, x, y);
     s.x2 = fx;
     s.y2 = fy;
     m_shapes.push_back(s);
