@@ -231,8 +231,10 @@ AnalysisResult runModelFile(const std::string& path, const std::vector<Override>
 
 AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     // A charge held at its lag is a condition of one instant (its wall
-    // torque is solved per configuration), not a law a time step can use.
-    if (spec.scenario.type != "kinetostatic")
+    // torque is solved per configuration), not a law a time step can use:
+    // kinetostatics, or a transient that is replayed instant by instant
+    // (checked by the transient once its scene is built).
+    if (spec.scenario.type != "kinetostatic" && spec.scenario.type != "transient")
         for (const auto& e : spec.elements)
             if (e.type == "SegmentCharge" && e.text("motion") == "held")
                 throw e.error("motion", "a held charge is a kinetostatic model; analysis '" + spec.scenario.type +

@@ -32,6 +32,15 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
 
     Simulation sim(*scene, spec.integrator);
     sim.initialize(state, sc.text("zero_dof") == "replay");
+    // A held charge's wall torque is an instant unknown: only a replayed run
+    // solves it at every sample.
+    for (const auto& e : spec.elements)
+        if (e.type == "SegmentCharge" && e.text("motion") == "held" && !sim.isReplay())
+            throw e.error("motion", "a held charge is a condition of each instant: a transient with one must have no "
+                                    "free degree of freedom and be replayed (" +
+                                        (sc.text("zero_dof") == "integrate" ? std::string("zero_dof is integrate")
+                                                                            : sim.replayReason()) +
+                                        "); use motion: with_drum or dynamic_lag");
     const SimTK::State first = sim.state();
 
     // Summary at the last sample before the first switch-off: steady running.

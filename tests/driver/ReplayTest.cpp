@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -121,6 +122,35 @@ TEST(ReplayTest, EnergyIntegralsConvergeAtTheTrapezoidRulesOrder) {
     EXPECT_NE(r1, 0.0);
     EXPECT_GT(r2 / r1, 3.5);
     EXPECT_LT(r2 / r1, 4.5);
+}
+
+TEST(ReplayTest, AHeldChargeStartIsTheKinetostaticsOfEachInstant) {
+    // Charges held at their lag: their wall torques are instant unknowns,
+    // so the start is replayed, each sample solved as the kinetostatic
+    // analysis solves one configuration. The same instant through that
+    // analysis (the sample's carrier angle and speed, the law's time) must
+    // give the same loads.
+    const AnalysisResult start = runGearStart("1 s", {{"fidelity.level", "held_charge"}});
+    ASSERT_EQ(start.statistics.integrator, "replay");
+    for (const std::size_t row : {std::size_t(37), std::size_t(100)}) {
+        const double t = start.value(row, "time");
+        char angle[64], speed[64], time[64];
+        std::snprintf(angle, sizeof angle, "%.17g rad", start.value(row, "carrier.angle"));
+        std::snprintf(speed, sizeof speed, "%.17g rad/s", start.value(row, "carrier.speed"));
+        std::snprintf(time, sizeof time, "%.17g s", t);
+        const AnalysisResult instant = runAnalysis(readModelFile(
+            kGear, defaultModelReader(),
+            {{"fidelity.level", "held_charge"}, {"scenario.angle_from", angle}, {"scenario.carrier_speed", speed},
+             {"scenario.time", time}, {"outputs.plots", "false"}}));
+        for (const std::string column : {"drive.torque", "charge1.wall_torque", "friction_B1.torque",
+                                         "reaction_A.on_carrier_at_axis_magnitude"}) {
+            const double a = start.value(row, column), b = instant.value(0, column);
+            EXPECT_NEAR(a, b, 1e-9 * std::max(1.0, std::abs(b))) << column << " at t = " << t;
+        }
+    }
+    // Integrating it is refused with the reason (exit 2 from the driver).
+    EXPECT_THROW(runGearStart("1 s", {{"fidelity.level", "held_charge"}, {"scenarios.start.zero_dof", "integrate"}}),
+                 SpecError);
 }
 
 /// Why a transient of the model is integrated (empty: it is replayed).
