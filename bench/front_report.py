@@ -42,7 +42,7 @@ def front(rows):
     return out
 
 
-def plot(scene, title, rows, pareto):
+def plot(scene, title, rows, pareto, ref=None):
     os.makedirs("docs/images", exist_ok=True)
     tmp = tempfile.mkdtemp()
     series = []
@@ -64,6 +64,11 @@ def plot(scene, title, rows, pareto):
             "set output 'docs/images/front_%s.png'" % scene, "set logscale xy", "set grid",
             "set title '%s'" % title.replace("'", ""), "set xlabel 'wall time [ms]'",
             "set ylabel 'max relative error'", "set key outside right top"]
+    if ref is not None and ref["integrator"] == "replay":
+        # The replay is the reference (error 0, off a log scale): a line at its time.
+        x = 1e3 * float(ref["wall_s"])
+        cmds += ["set arrow from %g, graph 0 to %g, graph 1 nohead dt 2 lw 2 lc rgb 'red'" % (x, x),
+                 "set label 'replay (the reference), %.3g ms' at %g, graph 0.03 left offset 0.5,0 tc rgb 'red'" % (x, x)]
     parts = ["'%s' with points pt %d title '%s'" % (f, 1 + i % 13, t) for i, (f, t) in enumerate(series)]
     parts.append("'%s' with lines lw 2 lc rgb 'black' title 'front'" % fp)
     cmds.append("plot " + ", ".join(parts))
@@ -85,7 +90,7 @@ for scene, title, what in SCENES:
         continue
     pareto = front(rows)
     ids = {id(r) for r in pareto}
-    plot(scene, title, rows, pareto)
+    plot(scene, title, rows, pareto, ref)
     out += ["## %s" % title, "", "Error: %s. Reference run: %s s wall, %s steps." % (what, fmt(ref["wall_s"], 3), ref["steps"]),
             "", "![front](images/front_%s.png)" % scene, "",
             "| variant | integrator | accuracy | status | error | wall [ms] | steps | realizations | front |",
