@@ -108,13 +108,14 @@ int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
         const double worstChange = scene.laggedValues().empty() ? 0 : refreshLaggedValues(scene, s);
         if (!(worstChange > tolerance) && !(worstResidual > tolerance)) {
             if (!std::isfinite(worstChange) || !std::isfinite(worstResidual))
-                throw AnalysisError("kinetostatic: non-finite loads at carrier angle " +
-                                    std::to_string(s.getQ()[0]) + " rad");
+                throw AnalysisError("held wall torques or journal loads are not finite at " +
+                                    timeText(s.getTime()) + ", first coordinate " + std::to_string(s.getQ()[0]));
             system.realize(s, SimTK::Stage::Acceleration);
             return iter;
         }
     }
-    throw AnalysisError("kinetostatic: wall torques and journal reactions did not converge in 100 iterations");
+    throw AnalysisError("held wall torques and journal loads did not converge in 100 iterations at " +
+                        timeText(s.getTime()) + ", first coordinate " + std::to_string(s.getQ()[0]));
 }
 
 Simulation::Simulation(const Scene& scene, const IntegratorSpec& settings)
