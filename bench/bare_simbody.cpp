@@ -93,13 +93,11 @@ bench::RunOutcome runOnce(const bench::TransientScene& scene, const std::string&
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: bench_bare_simbody burr|roll [TOL] [REPEATS]\n");
-        return 2;
-    }
-    const bench::TransientScene scene = bench::findScene(argv[1]);
-    const std::string tol = argc > 2 ? argv[2] : "1e-6";
-    const int repeats = argc > 3 ? std::atoi(argv[3]) : 5;
+    bench::BenchArgs args;
+    if (!bench::parseBenchArgs(argc, argv, "bench_bare_simbody burr|roll [TOL] [REPEATS]", args)) return 2;
+    const bench::TransientScene& scene = args.scene;
+    const std::string& tol = args.tol;
+    const int repeats = args.repeats;
     for (const std::string& integrator : bench::integrators())
         bench::timeAndPrint("simbody_" + integrator, tol, repeats,
                             [&] { return runOnce(scene, integrator, std::atof(tol.c_str())); });

@@ -11,13 +11,11 @@
 
 int main(int argc, char** argv) {
     using namespace milldyn;
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: bench_milldyn burr|roll [TOL] [REPEATS]\n");
-        return 2;
-    }
-    const bench::TransientScene scene = bench::findScene(argv[1]);
-    const std::string tol = argc > 2 ? argv[2] : "1e-6";
-    const int repeats = argc > 3 ? std::atoi(argv[3]) : 5;
+    bench::BenchArgs args;
+    if (!bench::parseBenchArgs(argc, argv, "bench_milldyn burr|roll [TOL] [REPEATS]", args)) return 2;
+    const bench::TransientScene& scene = args.scene;
+    const std::string& tol = args.tol;
+    const int repeats = args.repeats;
     const std::string model = std::string(MILLDYN_SOURCE_DIR) + "/models/" + scene.modelFile;
     char sample[32];
     std::snprintf(sample, sizeof sample, "%.17g s", scene.sampleInterval);

@@ -85,13 +85,11 @@ void run(const bench::TransientScene& scene, const std::string& tolText, int rep
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: bench_odeint burr|roll [TOL] [REPEATS] [dopri5]\n");
-        return 2;
-    }
-    const bench::TransientScene scene = bench::findScene(argv[1]);
-    const std::string tol = argc > 2 ? argv[2] : "1e-6";
-    const int repeats = argc > 3 ? std::atoi(argv[3]) : 5;
+    bench::BenchArgs args;
+    if (!bench::parseBenchArgs(argc, argv, "bench_odeint burr|roll [TOL] [REPEATS] [dopri5]", args)) return 2;
+    const bench::TransientScene& scene = args.scene;
+    const std::string& tol = args.tol;
+    const int repeats = args.repeats;
     const bool dopri5Only = argc > 4 && std::string(argv[4]) == "dopri5";
     if (scene.name == "burr") run<burr::rhs<Vec4>>(scene, tol, repeats, dopri5Only);
     else run<roll::rhs<Vec4>>(scene, tol, repeats, dopri5Only);

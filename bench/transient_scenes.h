@@ -11,6 +11,7 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -110,6 +111,26 @@ void timeAndPrint(const std::string& method, const std::string& tolerance, int r
                     1e6 * wall / outcome.realizations);
     std::printf("\"omega2\": [%.15g, %.15g, %.15g]}\n", outcome.values[0], outcome.values[1], outcome.values[2]);
     std::fflush(stdout);
+}
+
+/// The command line the transient bench programs share:
+/// PROGRAM SCENE [TOL] [REPEATS] (what follows is the program's own).
+struct BenchArgs {
+    TransientScene scene;
+    std::string tol = "1e-6";  ///< as typed, printed as given
+    int repeats = 5;
+};
+
+/// Reads it, or prints `usage` and returns false (the program exits 2).
+inline bool parseBenchArgs(int argc, char** argv, const char* usage, BenchArgs& out) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: %s\n", usage);
+        return false;
+    }
+    out.scene = findScene(argv[1]);
+    if (argc > 2) out.tol = argv[2];
+    if (argc > 3) out.repeats = std::atoi(argv[3]);
+    return true;
 }
 
 }  // namespace bench

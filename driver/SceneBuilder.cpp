@@ -10,6 +10,11 @@ namespace milldyn {
 namespace {
 constexpr double kPlaceholderMass = 1.0;  // [kg]
 
+/// `name` is `parent` or one of its outputs ("parent.x").
+bool isOrUnder(const std::string& name, const std::string& parent) {
+    return name == parent || name.compare(0, parent.size() + 1, parent + ".") == 0;
+}
+
 std::string suggestion(const std::string& word, const std::vector<std::string>& names) {
     const std::string near = nearestName(word, names);
     return near.empty() ? "" : " (did you mean '" + near + "'?)";
@@ -55,16 +60,13 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
     const std::vector<std::string>& columns = spec.outputs.columns;
     // A column names an element (all its outputs) or one output "ELEMENT.x".
     auto named = [&](const std::string& output) {
-        for (const auto& c : columns)
-            if (output == c || output.compare(0, c.size() + 1, c + ".") == 0) return true;
-        return false;
+        return std::any_of(columns.begin(), columns.end(), [&](const std::string& c) { return isOrUnder(output, c); });
     };
     for (const auto& e : spec.elements) {
         const ElementType* type = registry.find(e.type);
         if (!type) throw SpecError(e.where, e.name + ".type", "unknown element type '" + e.type + "'");
-        const bool elementNamed = std::any_of(columns.begin(), columns.end(), [&](const std::string& c) {
-            return c == e.name || c.compare(0, e.name.size() + 1, e.name + ".") == 0;
-        });
+        const bool elementNamed =
+            std::any_of(columns.begin(), columns.end(), [&](const std::string& c) { return isOrUnder(c, e.name); });
         if (type->schema.outputOnly && !columns.empty() && !elementNamed) {
             scene->omit("output " + e.name + " (" + e.type + ")", "outputs.columns names none of its outputs");
             continue;

@@ -131,6 +131,7 @@ void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
     if (allowReplay) {
         m_replayReason = whyNoReplay(m_scene, start);
         if (m_replayReason.empty()) {
+            const RunStatistics integrated = m_extra;  // kept if the placement refuses the replay
             m_replay = true;
             m_replayState = start;
             m_replayStart = start.getTime();
@@ -157,9 +158,7 @@ void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
             }
             m_replay = false;
             m_replayRefused = true;
-            m_extra = RunStatistics();
-            m_extra.integrator = m_settings.name;
-            m_extra.accuracy = m_settings.accuracy;
+            m_extra = integrated;
             m_replayReason = "integrated: the elements' placement leaves constraint errors (" +
                              std::to_string(std::max(qerr, uerr)) + ")";
         }
@@ -338,6 +337,8 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
     // ends only; the samples inside a step are interpolated from the last
     // step end (time, y, ẏ) and this one into m_sample.
     const bool own = m_sampleByHermite;
+    // The next sample's time: a multiple of the interval, or the end.
+    auto nextSampleTime = [&] { return std::min(t0 + sampleIndex * sampleInterval, endTime); };
     double tPrev = t0;
     SimTK::Vector yPrev, ydotPrev;
     auto rememberStepEnd = [&]() {
@@ -356,7 +357,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         const SimTK::State& end = integ.getState();
         bool discreteCopied = false;
         for (;;) {
-            const double ts = std::min(t0 + sampleIndex * sampleInterval, endTime);
+            const double ts = nextSampleTime();
             if (!(ts < until && ts > tPrev)) break;
             if (!discreteCopied) {
                 copyDiscreteVariables(end, m_sample);
@@ -373,9 +374,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         const double hardStop = nextSwitch < switchTimes.size() ? switchTimes[nextSwitch] : endTime;
         SimTK::Integrator::SuccessfulStepStatus status;
         try {
-            status = integ.stepTo(own ? hardStop : std::min(std::min(t0 + sampleIndex * sampleInterval, endTime),
-                                                            hardStop),
-                                  hardStop);
+            status = integ.stepTo(own ? hardStop : std::min(nextSampleTime(), hardStop), hardStop);
         } catch (const std::exception& e) {
             throw AnalysisError("integrator " + m_settings.name + " failed near " + timeText(integ.getTime()) +
                                 ": " + std::string(e.what()).substr(0, 300));
@@ -399,7 +398,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             if (!integ.isStateInterpolated()) lastWatch = value;
         }
         if (own) emitInterpolated(s.getTime());
-        const double nextSample = std::min(t0 + sampleIndex * sampleInterval, endTime);
+        const double nextSample = nextSampleTime();
         if (!integ.isStateInterpolated()) {
             makeLaggedValuesConsistent();  // may restart: s then is the consistent state
             if (watch) lastStepEnd = integ.getState();

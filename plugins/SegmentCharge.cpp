@@ -154,9 +154,9 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
 
     const double m = impl->calcMass(), lc = impl->calcCentroidDistance();
     const double centralPolar = impl->calcAxisInertia() - m * lc * lc;
-    const Vec3 com(0, -lc, 0);
-    const Inertia inertia = Inertia(centralPolar / 2, centralPolar / 2, centralPolar) + Inertia(com, m);
-    const Body::Rigid body(MassProperties(m, com, inertia));
+    // About the mass centre: polar about z (a disc), so the same in any
+    // frame turned about z.
+    const Inertia central(centralPolar / 2, centralPolar / 2, centralPolar);
     MobilizedBody drumBody = drum.mobod;  // handles: a copy is the body
     MobilizedBody chargeBody;
     if (p.motion == ChargeMotionMode::WithDrum) {
@@ -165,16 +165,17 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         // welded body of its own. The motion and every reaction at the
         // drum's joint are the same; a welded body would cost a body in
         // every realization and carry nothing an output reads (the charge's
-        // lag follows from the drum's angle). Central inertia is polar
-        // about z, so it is the same in the drum frame.
+        // lag follows from the drum's angle).
         const Vec3 comInDrum(lc * std::cos(p.initialDirection), lc * std::sin(p.initialDirection), 0);
         const MassProperties d = drumBody.getDefaultMassProperties();
         const double total = d.getMass() + m;
-        const Inertia aboutOrigin = d.getInertia() + Inertia(centralPolar / 2, centralPolar / 2, centralPolar) +
-                                    Inertia(comInDrum, m);
+        const Inertia aboutOrigin = d.getInertia() + central + Inertia(comInDrum, m);
         drumBody.setDefaultMassProperties(
             MassProperties(total, (d.getMass() * d.getMassCenter() + m * comInDrum) / total, aboutOrigin));
     } else {
+        // The body's mass centre lies on its −y axis.
+        const Vec3 com(0, -lc, 0);
+        const Body::Rigid body(MassProperties(m, com, central + Inertia(com, m)));
         chargeBody = MobilizedBody::Pin(drumBody, Transform(), body, Transform());
         impl->setBody(chargeBody);
         // Scene bodies are pins (analyses read one angle and speed from each).
