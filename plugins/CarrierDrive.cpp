@@ -34,8 +34,9 @@ double CarrierDrive::calcSpeed(double t) const {
 std::pair<double, double> CarrierDrive::calcAdvance(double t0, double u0, double t) const {
     if (!m_p.exponential) return {u0 * (t - t0), u0};
     const double e0 = calcInitialAcceleration(), tau = m_p.timeConstant;
-    // expm1 keeps V and P accurate near t = 0 (no 1 − e^(−t/τ) cancellation).
-    auto V = [&](double x) { return e0 * tau * -std::expm1(-x / tau); };
+    // V is the speed from rest (calcSpeed); expm1 keeps P accurate near
+    // t = 0 (no 1 − e^(−t/τ) cancellation).
+    auto V = [this](double x) { return calcSpeed(x); };
     auto P = [&](double x) { return e0 * tau * (x + tau * std::expm1(-x / tau)); };
     return {(u0 - V(t0)) * (t - t0) + P(t) - P(t0), u0 + V(t) - V(t0)};
 }
