@@ -9,7 +9,7 @@
 #include "driver/outputs/AtomicFile.h"
 #include "driver/outputs/Schematic.h"
 #include "driver/outputs/Writers.h"
-#include "plugins/ElementRegistry.h"
+#include "plugins/scene/ElementRegistry.h"
 #include "validation/cases/ValidationCases.h"
 #include "validation/report/ReportWriter.h"
 
@@ -247,6 +247,14 @@ int commandInfo(const Arguments& a, std::ostream& out) {
         out << "\n";
     }
     if (!spec.preset.empty()) out << "  preset " << spec.preset << ": " << spec.presetWhy << "\n";
+    if (!scene->derivedValues().empty()) {
+        out << "  derived values:\n";
+        for (const auto& d : scene->derivedValues()) {
+            std::ostringstream v;
+            v << std::setprecision(17) << d.value;
+            out << "    " << d.name << " = " << v.str() << " " << d.unit << " — " << d.doc << "\n";
+        }
+    }
     out << "  built:\n";
     for (const auto& n : scene->notes()) out << "    " << n.what << " — " << n.why << "\n";
     if (!spec.notBuilt.empty() || !scene->omitted().empty()) {

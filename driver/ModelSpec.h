@@ -3,7 +3,7 @@
 // units; knows nothing of Simbody (the SceneBuilder turns it into a Scene)
 // and nothing of YAML (ModelFile reads it).
 
-#include "plugins/ElementSchema.h"
+#include "plugins/scene/ElementSchema.h"
 
 #include <array>
 #include <string>

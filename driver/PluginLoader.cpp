@@ -1,6 +1,6 @@
 #include "driver/PluginLoader.h"
 
-#include "plugins/ElementRegistry.h"
+#include "plugins/scene/ElementRegistry.h"
 
 #include <dlfcn.h>
 
@@ -24,7 +24,7 @@ void loadPlugin(const std::string& path) {
     auto reg = reinterpret_cast<RegisterFn>(::dlsym(handle, "milldyn_register_elements"));
     if (!abi || !simbody || !reg)
         throw fail("not a milldyn plugin (no milldyn_plugin_abi_version / milldyn_plugin_simbody_version / "
-                   "milldyn_register_elements; see plugins/PluginApi.h)");
+                   "milldyn_register_elements; see plugins/scene/PluginApi.h)");
     if (abi() != kPluginAbiVersion)
         throw fail("built against plugin ABI " + std::to_string(abi()) + ", this milldyn has ABI " +
                    std::to_string(kPluginAbiVersion) + ": rebuild the plugin");

@@ -1,6 +1,6 @@
 #pragma once
 // Loads plugin libraries (`--plugin lib.so`) that add element types to the
-// one registry. See plugins/PluginApi.h for what a plugin exports.
+// one registry. See plugins/scene/PluginApi.h for what a plugin exports.
 
 #include <string>
 

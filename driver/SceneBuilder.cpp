@@ -1,7 +1,7 @@
 #include "driver/SceneBuilder.h"
 
-#include "plugins/ElementRegistry.h"
-#include "plugins/EnergyMeter.h"
+#include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/EnergyMeter.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // SceneBuilder: ModelSpec → Scene (a Simbody system with our elements).
 
 #include "driver/ModelSpec.h"
-#include "plugins/Scene.h"
+#include "plugins/scene/Scene.h"
 
 #include <memory>
 

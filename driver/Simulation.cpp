@@ -1,6 +1,6 @@
 #include "driver/Simulation.h"
 
-#include "plugins/EnergyMeter.h"
+#include "plugins/scene/EnergyMeter.h"
 
 #include <Eigen/Dense>
 

@@ -7,7 +7,7 @@
 // the last accepted step, so its time is as accurate as the integration.
 
 #include "driver/ModelSpec.h"
-#include "plugins/Scene.h"
+#include "plugins/scene/Scene.h"
 
 #include <functional>
 #include <memory>

@@ -4,7 +4,7 @@
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
 #include "driver/outputs/Writers.h"
-#include "plugins/ElementRegistry.h"
+#include "plugins/scene/ElementRegistry.h"
 
 #include <nlohmann/json.hpp>
 

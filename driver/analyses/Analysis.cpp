@@ -1,8 +1,8 @@
 #include "driver/analyses/Analysis.h"
 
 #include "driver/ModelFile.h"
-#include "plugins/ElementRegistry.h"
-#include "plugins/EnergyMeter.h"
+#include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/EnergyMeter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +11,12 @@
 #include <stdexcept>
 
 namespace milldyn {
+
+std::vector<ResultScalar> derivedResults(const Scene& scene) {
+    std::vector<ResultScalar> out;
+    for (const DerivedValue& d : scene.derivedValues()) out.push_back({d.name, d.value, d.unit, d.doc});
+    return out;
+}
 
 const ResultScalar* AnalysisResult::find(const std::string& name) const {
     for (const auto& r : results)

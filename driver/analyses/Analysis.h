@@ -43,6 +43,8 @@ struct AnalysisResult {
     std::vector<std::string> columnUnits;
     std::vector<std::vector<double>> rows;
     std::vector<ResultScalar> results;
+    /// Values the elements derive from their parameters (Scene::addDerivedValue).
+    std::vector<ResultScalar> derived;
     std::vector<std::string> notes;  ///< what happened, in words
     RunStatistics statistics;
     /// The columns worth a plot (indices into columnNames) and their titles.
@@ -100,6 +102,9 @@ AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress
 AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress);
 AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn& progress);
+
+/// The scene's derived values as results (AnalysisResult::derived).
+std::vector<ResultScalar> derivedResults(const Scene& scene);
 
 /// Sum of every probe with this role in this state.
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);

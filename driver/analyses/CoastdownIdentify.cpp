@@ -180,6 +180,7 @@ AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& pro
 
     AnalysisResult result;
     result.analysis = "coastdown_identify";
+    result.derived = derivedResults(*buildScene(spec));
     const Trial final = problem.simulate(Mc, 50 * target + 10, &result);
     result.results.push_back({"resistance_torque", Mc, "N*m",
                               "constant resistance reproducing the run-out time (" + sc.text("runout_measure") + ")"});

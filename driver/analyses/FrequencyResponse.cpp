@@ -9,7 +9,7 @@
 #include "driver/analyses/Analysis.h"
 #include "driver/analyses/LinearModel.h"
 #include "driver/analyses/LoadResponse.h"
-#include "plugins/PeriodicLoad.h"
+#include "plugins/loads/PeriodicLoad.h"
 
 #include <cmath>
 #include <complex>
@@ -62,6 +62,7 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     auto linearOutput = [&](double P, int probe) { return response.output(P, k, probe); };
 
     AnalysisResult result;
+    result.derived = derivedResults(*scene);
     result.analysis = "frequency_response";
     result.tableName = "frequency_response";
     result.plotXLabel = "forcing frequency [rad/s]";

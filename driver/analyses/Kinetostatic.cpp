@@ -36,6 +36,7 @@ AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress
     const double speed = sc.number("carrier_speed"), tolerance = sc.number("tolerance");
 
     AnalysisResult result;
+    result.derived = derivedResults(*scene);
     result.analysis = "kinetostatic";
     result.tableName = "kinetostatics";
     result.plotXLabel = "carrier angle [rad]";

@@ -5,7 +5,7 @@
 // accelerations: K = −M·∂q̈/∂q, C = −M·∂q̈/∂q̇. Joints with q̇ = u only (pin,
 // gimbal, bushing; not ball or free, whose q are quaternions).
 
-#include "plugins/Scene.h"
+#include "plugins/scene/Scene.h"
 
 #include <Eigen/Dense>
 

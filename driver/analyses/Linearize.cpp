@@ -48,6 +48,7 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
     const LinearModel lm = linearizeScene(*scene, state);
 
     AnalysisResult result;
+    result.derived = derivedResults(*scene);
     result.analysis = "linearize";
     result.tableName = "mode_shapes";
     result.plotXLabel = "body index (parents first)";

@@ -9,7 +9,7 @@
 // coupling carries. The dynamic factor is A over that reference.
 
 #include "driver/analyses/LinearModel.h"
-#include "plugins/PeriodicLoad.h"
+#include "plugins/loads/PeriodicLoad.h"
 
 #include <complex>
 #include <vector>

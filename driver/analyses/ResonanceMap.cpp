@@ -37,6 +37,7 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     const double threshold = sc.number("threshold");
 
     AnalysisResult result;
+    result.derived = derivedResults(*scene);
     result.analysis = "resonance_map";
     result.tableName = "resonance_map";
     result.plotXLabel = "rotor speed [rad/s]";

@@ -5,7 +5,7 @@
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/analyses/LinearModel.h"
-#include "plugins/FlexibleRotor.h"
+#include "plugins/shafts/FlexibleRotor.h"
 
 #include <Eigen/Dense>
 
@@ -69,6 +69,7 @@ AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn&) {
     if (!a.allFinite()) throw AnalysisError("static_deflection: the equilibrium search diverged");
 
     AnalysisResult result;
+    result.derived = derivedResults(*scene);
     result.analysis = "static_deflection";
     result.tableName = "deflection_line";
     result.plotXLabel = "position along the shaft [m]";

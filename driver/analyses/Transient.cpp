@@ -21,6 +21,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     if (start == "steady") state = solveSteadyState(*scene, state);
 
     AnalysisResult result;
+    result.derived = derivedResults(*scene);
     result.analysis = "transient";
     SampleTable table(*scene, result);
     const SceneBody& speedBody = scenarioBody(*scene, sc, "speed_body");

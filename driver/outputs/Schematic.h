@@ -1,6 +1,6 @@
 #pragma once
 // The 2-D schematic of a machine (`milldyn run MODEL --schematic`): what
-// every element draws of itself (Scene::addSketch, plugins/Sketch.h) at
+// every element draws of itself (Scene::addSketch, plugins/scene/Sketch.h) at
 // chosen instants of a run, written as SVG (and PNG when rsvg-convert is
 // installed). Reaction arrows share one force scale across all pictures of
 // a run, with a reference arrow in the legend, so lengths compare.
@@ -8,7 +8,7 @@
 // docs/schematic.md describes the command and the picture.
 
 #include "driver/ModelSpec.h"
-#include "plugins/Scene.h"
+#include "plugins/scene/Scene.h"
 
 #include <string>
 #include <vector>

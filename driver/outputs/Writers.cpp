@@ -40,6 +40,10 @@ std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& resul
     for (const auto& r : result.results)
         results[r.name] = {{"value", r.value}, {"unit", r.unit}, {"description", r.doc}};
     j["results"] = results;
+    nlohmann::ordered_json derived = nlohmann::ordered_json::object();
+    for (const auto& r : result.derived)
+        derived[r.name] = {{"value", r.value}, {"unit", r.unit}, {"description", r.doc}};
+    j["derived"] = derived;
     j["notes"] = result.notes;
     j["settings"] = {{"integrator", result.statistics.integrator},
                      {"accuracy", result.statistics.accuracy},

@@ -4,7 +4,7 @@
 //   build/milldyn run MODEL --plugin build/libmilldyn_example_plugin.so
 // (docs/plugins.md walks through it).
 
-#include "plugins/PluginApi.h"
+#include "plugins/scene/PluginApi.h"
 
 #include <Simbody.h>
 

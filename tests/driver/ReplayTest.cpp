@@ -8,7 +8,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
-#include "plugins/CarrierDrive.h"
+#include "plugins/motors/CarrierDrive.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // elastic law's stick, Euler–Eytelwein cap and slip speed, and bad input.
 // Expected values are hand-derived here, never read back from the code.
 
-#include "plugins/BeltDrive.h"
+#include "plugins/transmissions/BeltDrive.h"
 
 #include "driver/SceneBuilder.h"
 #include "tests/driver/ReaderTestHelpers.h"

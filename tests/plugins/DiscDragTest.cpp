@@ -2,8 +2,8 @@
 // turbulent law, the sign, the axis (the body's own z, whatever its
 // orientation), the probes and energy flow a scene gets, and bad input.
 
-#include "plugins/DiscDrag.h"
-#include "plugins/Scene.h"
+#include "plugins/loads/DiscDrag.h"
+#include "plugins/scene/Scene.h"
 #include "tests/plugins/ShaftFixture.h"
 
 #include <gtest/gtest.h>

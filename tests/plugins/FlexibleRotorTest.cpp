@@ -6,7 +6,7 @@
 #include "driver/ModelFile.h"
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
-#include "plugins/FlexibleRotor.h"
+#include "plugins/shafts/FlexibleRotor.h"
 #include "tests/driver/ReaderTestHelpers.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Tests of InductionMotor (plugins/InductionMotor.h). Expected values are
+// Tests of InductionMotor (plugins/motors/InductionMotor.h). Expected values are
 // worked out by hand in the comments, or computed here from the class
 // comment's equations written out afresh (klossTorque below), or come from
 // Simbody's own elements -- never from the motor's output.
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "plugins/ElementRegistry.h"
-#include "plugins/InductionMotor.h"
+#include "plugins/scene/ElementRegistry.h"
+#include "plugins/motors/InductionMotor.h"
 #include "tests/plugins/ShaftFixture.h"
 
 namespace milldyn {

@@ -1,4 +1,4 @@
-// Tests of PeriodicLoad (plugins/PeriodicLoad.h). Expected values are worked
+// Tests of PeriodicLoad (plugins/loads/PeriodicLoad.h). Expected values are worked
 // out by hand in the comments, or computed here from the class comment's
 // equations written out afresh (rowLoad below) or from sums derived by hand,
 // or come from Simbody's own solve and bookkeeping -- never from the
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "plugins/ElementRegistry.h"
-#include "plugins/PeriodicLoad.h"
+#include "plugins/scene/ElementRegistry.h"
+#include "plugins/loads/PeriodicLoad.h"
 #include "tests/plugins/ShaftFixture.h"
 
 namespace milldyn {

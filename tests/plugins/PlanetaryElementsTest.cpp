@@ -13,10 +13,10 @@
 #include "driver/SceneBuilder.h"
 #include "driver/Simulation.h"
 #include "driver/analyses/Analysis.h"
-#include "plugins/CarrierDrive.h"
-#include "plugins/GearMesh.h"
-#include "plugins/JournalFriction.h"
-#include "plugins/SegmentCharge.h"
+#include "plugins/motors/CarrierDrive.h"
+#include "plugins/transmissions/GearMesh.h"
+#include "plugins/bearings/JournalFriction.h"
+#include "plugins/charges/SegmentCharge.h"
 #include "tests/driver/ReaderTestHelpers.h"
 
 namespace milldyn {

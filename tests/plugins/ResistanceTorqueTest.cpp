@@ -1,4 +1,4 @@
-// Tests of ResistanceTorque (plugins/ResistanceTorque.h). Expected values are
+// Tests of ResistanceTorque (plugins/loads/ResistanceTorque.h). Expected values are
 // worked out by hand in the comments, or computed here from the class
 // comment's equations written out afresh (loadTorque below), or come from
 // Simbody's own elements -- never from the element's output.
@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "plugins/ElementRegistry.h"
-#include "plugins/ResistanceTorque.h"
+#include "plugins/scene/ElementRegistry.h"
+#include "plugins/loads/ResistanceTorque.h"
 #include "tests/plugins/ShaftFixture.h"
 
 namespace milldyn {

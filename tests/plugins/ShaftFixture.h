@@ -5,7 +5,7 @@
 // equation of motion is J·u̇ = (sum of mobility torques on it), whatever the
 // mass: the tests rely on that to turn accelerations into torques.
 
-#include "plugins/ElementRegistry.h"
+#include "plugins/scene/ElementRegistry.h"
 
 #include <Simbody.h>
 

@@ -1,4 +1,4 @@
-// Tests of TorsionalCoupling (plugins/TorsionalCoupling.h). Expected values
+// Tests of TorsionalCoupling (plugins/transmissions/TorsionalCoupling.h). Expected values
 // are worked out by hand in the comments from the class comment's equations,
 // or come from Simbody's own elements and bookkeeping -- never from the
 // coupling's output.
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "plugins/ElementRegistry.h"
-#include "plugins/TorsionalCoupling.h"
+#include "plugins/scene/ElementRegistry.h"
+#include "plugins/transmissions/TorsionalCoupling.h"
 #include "tests/plugins/ShaftFixture.h"
 
 namespace milldyn {

@@ -7,6 +7,8 @@
 // own parameter structs, so it cannot share a bug with the model it judges.
 #pragma once
 
+#include "papers/BeadMillTable1.h"
+
 #include <limits>
 #include <vector>
 
@@ -136,17 +138,8 @@ private:
 
 // -------------------------------------------------------- eq (2), Table 1
 
-/// Which reading of Table 1 to use.
-enum class BeadMillTableReading {
-    /// As printed: the columns D_d = 0.1, 0.17, 0.23, 0.3 m in print order,
-    /// k taken from the first block printed under each disc count (5: block
-    /// A, 6 and 7: block C, 8: block D).
-    Literal,
-    /// The reading under which the text's ranges hold: the four distinct
-    /// blocks A, B, C, D are k = 5, 6, 7, 8 and the diameter columns run
-    /// the other way (first column 0.3 m, last 0.1 m); d in mm, L_p in m.
-    Resolved,
-};
+using papers::BeadMillTableReading;
+using papers::beadMillTableCoefficient;
 
 /// Eq (2): d = k1·L³ − k2·L² + k3·L + k4, with L = L_p [m], 0.15 <= L_p <= 0.5,
 /// discs k in {5, 6, 7, 8}, D_d in {0.1, 0.17, 0.23, 0.3} m (tabulated values
@@ -154,9 +147,5 @@ enum class BeadMillTableReading {
 /// Throws std::invalid_argument for anything outside the table.
 double beadMillShaftDiameter(int discs, double discDiameter, double span,
                              BeadMillTableReading reading = BeadMillTableReading::Resolved);
-
-/// The printed coefficient k1..k4 of one of the four distinct blocks
-/// (0..3 = A..D) and printed column (0..3).
-double beadMillTableCoefficient(int block, int column, int coefficient);
 
 }  // namespace milldyn::oracles

@@ -2,7 +2,7 @@
 // PlanetaryLayout (example plugin, docs/new-layout.md): a whole planetary
 // mill layout as one element type, built from milldyn's own elements.
 
-#include "plugins/ElementRegistry.h"
+#include "plugins/scene/ElementRegistry.h"
 
 namespace planetary_layout {
 

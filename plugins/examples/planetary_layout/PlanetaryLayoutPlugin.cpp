@@ -7,7 +7,7 @@
 
 #include "PlanetaryLayout.h"
 #include "PlanetaryLayoutCases.h"
-#include "plugins/PluginApi.h"
+#include "plugins/scene/PluginApi.h"
 
 namespace {
 

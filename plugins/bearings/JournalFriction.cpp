@@ -1,0 +1,123 @@
+#include "plugins/bearings/JournalFriction.h"
+
+#include "plugins/scene/ElementRegistry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace milldyn {
+
+using namespace SimTK;
+
+JournalFriction::JournalFriction(const SimbodyMatterSubsystem& matter, const MobilizerReactions& reactions,
+                                 const MobilizedBody& body, const JournalFrictionParams& p)
+    : m_matter(matter), m_reactions(reactions), m_body(body), m_p(p) {
+    auto bad = [](const std::string& what) { throw std::invalid_argument("JournalFriction: " + what); };
+    if (!(p.frictionCoefficient >= 0 && p.frictionCoefficient <= 1)) bad("friction_coefficient must be in [0, 1]");
+    if (!(p.journalDiameter >= 0) || !std::isfinite(p.journalDiameter)) bad("journal_diameter must be >= 0 m");
+    if (!(p.smoothingSpeed > 0) || !std::isfinite(p.smoothingSpeed)) bad("smoothing_speed must be > 0 rad/s");
+}
+
+void JournalFriction::realizeTopology(State& s) const {
+    // [R_n, t_n, R_(n-1), t_(n-1)]: the reactions at the last two step ends.
+    m_keptLoad = m_matter.allocateAutoUpdateDiscreteVariable(s, Stage::Dynamics, new Value<Vec4>(Vec4(0)),
+                                                             Stage::Acceleration);
+}
+
+double JournalFriction::calcReaction(const State& s) const {
+    return m_reactions.getForce(s, m_body).norm();
+}
+
+const Vec4& JournalFriction::history(const State& s) const {
+    return Value<Vec4>::downcast(m_matter.getDiscreteVariable(s, m_keptLoad));
+}
+
+double JournalFriction::getLoad(const State& s) const {
+    const Vec4& h = history(s);
+    if (m_p.coupling != ReactionCoupling::Extrapolated || !(h[1] > h[3])) return h[0];
+    // Linear in time through the last two step ends: continuous within the
+    // step, so the integrator's error control sees the load change.
+    return std::max(0.0, h[0] + (s.getTime() - h[1]) * (h[0] - h[2]) / (h[1] - h[3]));
+}
+
+double JournalFriction::calcTorque(const State& s) const {
+    const double u = m_body.getOneU(s, MobilizerUIndex(0));
+    return getLoad(s) * m_p.frictionCoefficient * m_p.journalDiameter / 2 * std::tanh(u / m_p.smoothingSpeed);
+}
+
+double JournalFriction::calcPower(const State& s) const {
+    return calcTorque(s) * m_body.getOneU(s, MobilizerUIndex(0));
+}
+
+double JournalFriction::keepLoad(State& s, double now) const {
+    const double kept = getLoad(s);
+    const double t = s.getTime();
+    Value<Vec4>::updDowncast(m_matter.updDiscreteVariable(s, m_keptLoad)) = Vec4(now, t, now, t);
+    return std::abs(now - kept) / std::max(now, 1e-300);
+}
+
+void JournalFriction::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&, Vector& mobilityForces) const {
+    m_body.applyOneMobilityForce(s, MobilizerUIndex(0), -calcTorque(s), mobilityForces);
+}
+
+void JournalFriction::realizeAcceleration(const State& s) const {
+    // Keep this step's reaction for the next (swapped in by the integrator
+    // when the step is accepted).
+    const Vec4& h = history(s);
+    Value<Vec4>::updDowncast(m_matter.updDiscreteVarUpdateValue(s, m_keptLoad)) =
+        Vec4(calcReaction(s), s.getTime(), h[0], h[1]);
+    m_matter.markDiscreteVarUpdateValueRealized(s, m_keptLoad);
+}
+
+namespace {
+
+void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
+    const SceneBody* body = scene.findBody(spec.text("body"));
+    JournalFrictionParams p;
+    p.frictionCoefficient = spec.number("friction_coefficient");
+    p.journalDiameter = spec.number("journal_diameter");
+    p.smoothingSpeed = spec.number("smoothing_speed");
+    const std::string& coupling = spec.text("reaction");
+    p.coupling = coupling == "iterated"       ? ReactionCoupling::Iterated
+                 : coupling == "extrapolated" ? ReactionCoupling::Extrapolated
+                                              : ReactionCoupling::Lagged;
+    auto* impl = new JournalFriction(scene.matter(), scene.mobilizerReactions(), body->mobod, p);
+    Force::Custom force(scene.forces(), impl);
+    scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
+    scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, Stage::Velocity,
+                    [impl](const State& s) { return std::abs(impl->calcTorque(s)); }});
+    scene.addProbe({spec.name + ".load", "N", ProbeRole::Generic, Stage::Velocity,
+                    [impl](const State& s) { return impl->getLoad(s); }});
+    scene.addProbe({spec.name + ".reaction", "N", ProbeRole::Generic, Stage::Acceleration,
+                    [impl](const State& s) { return impl->calcReaction(s); }});
+    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
+                         [impl](const State& s) { return impl->calcPower(s); }});
+    scene.addLaggedValue({spec.name + ".load", p.coupling == ReactionCoupling::Iterated,
+                          [impl](const State& s) { return impl->calcReaction(s); },
+                          [impl](State& s, double load) { return impl->keepLoad(s, load); }});
+    scene.note("force " + spec.name + " (JournalFriction, " + spec.text("reaction") + ")",
+               "journal of " + body->name + " on its parent, load from Simbody's reaction");
+}
+
+}  // namespace
+
+void registerJournalFriction(ElementRegistry& registry) {
+    using P = ParamSchema;
+    ElementSchema s;
+    s.type = "JournalFriction";
+    s.doc = "Journal-bearing friction M = |R| f d/2 from the reaction the model computes (seed 000 eq 21).";
+    s.params = {
+        P::body("body", "body whose pin (to its parent) is the journal"),
+        P::quantity("friction_coefficient", "1", "f").atLeast(0).atMost(1),
+        P::quantity("journal_diameter", "m", "d").atLeast(0),
+        P::quantity("smoothing_speed", "rad/s", "ω_s of tanh(u/ω_s) near zero relative speed").optional(1e-3).above(0),
+        P::choice("reaction", {"lagged", "iterated", "extrapolated"},
+                  "reaction of the last step, made consistent each step, or extrapolated from the last two")
+            .optional(std::string("lagged")),
+    };
+    registry.add({std::move(s), buildJournalFriction});
+}
+
+}  // namespace milldyn

@@ -1,0 +1,138 @@
+#include "plugins/loads/PeriodicLoad.h"
+
+#include "plugins/scene/ElementRegistry.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace milldyn {
+
+PeriodicLoad::PeriodicLoad(const SimTK::GeneralForceSubsystem& forces, std::vector<SimTK::MobilizedBody> bodies,
+                           const PeriodicLoadParams& p)
+    : m_forces(forces), m_bodies(std::move(bodies)), m_params(p) {
+    auto check = [](bool ok, const std::string& name, double v, const std::string& rule) {
+        if (!ok)
+            throw std::invalid_argument("PeriodicLoad: " + name + " = " + std::to_string(v) + " is invalid: " + rule);
+    };
+    check(p.rows >= 1, "rows", p.rows, "must be >= 1");
+    check(!m_bodies.empty() && (m_bodies.size() == 1 || static_cast<int>(m_bodies.size()) == p.rows), "bodies",
+          static_cast<double>(m_bodies.size()), "give one body per row, or one body for all rows");
+    check(std::isfinite(p.meanTorque) && p.meanTorque >= 0, "mean_torque", p.meanTorque, "must be finite and >= 0");
+    for (double b : p.amplitudes) check(std::isfinite(b) && b >= 0, "amplitudes", b, "each must be finite and >= 0");
+    check(std::isfinite(p.fundamentalFrequency) && p.fundamentalFrequency > 0, "fundamental_frequency",
+          p.fundamentalFrequency, "must be finite and > 0");
+    check(std::isfinite(p.smoothingSpeed) && p.smoothingSpeed > 0, "smoothing_speed", p.smoothingSpeed,
+          "must be finite and > 0");
+}
+
+double PeriodicLoad::rowPhase(int row) const {
+    return m_params.staggered ? 2 * SimTK::Pi * row / m_params.rows : 0.0;
+}
+
+double PeriodicLoad::periodicPart(int row, double t) const {
+    const double theta = m_params.fundamentalFrequency * t + rowPhase(row);
+    double sum = 0;
+    for (std::size_t k = 0; k < m_params.amplitudes.size(); ++k)
+        sum += m_params.amplitudes[k] * std::sin((k + 1) * theta);
+    return sum;
+}
+
+int PeriodicLoad::bodyOfRow(int row) const { return m_bodies.size() == 1 ? 0 : row; }
+
+bool PeriodicLoad::isExcitationOn(const SimTK::State& s) const {
+    return SimTK::Value<bool>::downcast(m_forces.getDiscreteVariable(s, m_excitationIndex));
+}
+
+void PeriodicLoad::setExcitationOn(SimTK::State& s, bool on) const {
+    SimTK::Value<bool>::updDowncast(m_forces.updDiscreteVariable(s, m_excitationIndex)) = on;
+}
+
+double PeriodicLoad::rowTorque(const SimTK::State& s, int row) const {
+    const double omega = m_bodies[bodyOfRow(row)].getOneU(s, SimTK::MobilizerUIndex(0));
+    double M = m_params.meanTorque * std::tanh(omega / m_params.smoothingSpeed);
+    if (isExcitationOn(s)) M += periodicPart(row, s.getTime());
+    return M;
+}
+
+double PeriodicLoad::calcTotalTorque(const SimTK::State& s) const {
+    double sum = 0;
+    for (int r = 0; r < m_params.rows; ++r) sum += rowTorque(s, r);
+    return sum;
+}
+
+double PeriodicLoad::calcAbsorbedPower(const SimTK::State& s) const {
+    double sum = 0;
+    for (int r = 0; r < m_params.rows; ++r)
+        sum += rowTorque(s, r) * m_bodies[bodyOfRow(r)].getOneU(s, SimTK::MobilizerUIndex(0));
+    return sum;
+}
+
+void PeriodicLoad::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                             SimTK::Vector& mobilityForces) const {
+    for (int r = 0; r < m_params.rows; ++r)
+        m_bodies[bodyOfRow(r)].applyOneMobilityForce(s, SimTK::MobilizerUIndex(0), -rowTorque(s, r), mobilityForces);
+}
+
+void PeriodicLoad::realizeTopology(SimTK::State& s) const {
+    m_excitationIndex =
+        m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<bool>(true));
+}
+
+namespace {
+
+void buildPeriodicLoad(const ElementSpec& spec, Scene& scene) {
+    std::vector<SimTK::MobilizedBody> bodies;
+    for (const auto& name : spec.names("bodies")) bodies.push_back(scene.findBody(name)->mobod);
+    PeriodicLoadParams p;
+    p.rows = static_cast<int>(spec.number("rows"));
+    p.meanTorque = spec.number("mean_torque");
+    p.amplitudes = spec.numbers("amplitudes");
+    p.fundamentalFrequency = spec.number("fundamental_frequency");
+    p.staggered = spec.text("arrangement") == "staggered";
+    p.smoothingSpeed = spec.number("smoothing_speed");
+    auto* impl = new PeriodicLoad(scene.forces(), bodies, p);
+    SimTK::Force::Custom force(scene.forces(), impl);
+    scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
+    scene.addExcitation(spec.name, [impl](SimTK::State& s, bool on) { impl->setExcitationOn(s, on); });
+    scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, SimTK::Stage::Velocity,
+                    [impl](const SimTK::State& s) { return impl->calcTotalTorque(s); }});
+    scene.addProbe({spec.name + ".power", "W", ProbeRole::ResistancePower, SimTK::Stage::Velocity,
+                    [impl](const SimTK::State& s) { return impl->calcAbsorbedPower(s); }});
+    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load,
+                         [impl](const SimTK::State& s) { return impl->calcAbsorbedPower(s); }});
+    scene.note("force " + spec.name + " (PeriodicLoad, " + std::to_string(p.rows) + " rows, " +
+                   spec.text("arrangement") + ")",
+               "loads " + std::to_string(bodies.size()) + " bod" + (bodies.size() == 1 ? "y" : "ies"));
+}
+
+}  // namespace
+
+void registerPeriodicLoad(ElementRegistry& registry) {
+    using P = ParamSchema;
+    ElementSchema s;
+    s.type = "PeriodicLoad";
+    s.doc = "Crushing torque of sprocket rows: mean plus Fourier series b_k·sin(k(P1·t + φ_r)) (seed 004 eqs 13, 27).";
+    s.params = {
+        P::bodyList("bodies", 1, 1000, "one body per row, or one body carrying all rows"),
+        P::quantity("rows", "1", "number of sprocket rows n").above(0).atMost(1000),
+        P::quantity("mean_torque", "N*m", "mean crushing torque per row").optional(0.0).atLeast(0),
+        P::quantityList("amplitudes", "N*m", 0, 100, "harmonic amplitudes b_1..b_K per row").atLeast(0),
+        P::quantity("fundamental_frequency", "rad/s", "P_1; harmonic k is at k·P_1").above(0),
+        P::choice("arrangement", {"in_phase", "staggered"}, "row phases: all equal, or evenly staggered")
+            .optional("staggered"),
+        P::quantity("smoothing_speed", "rad/s", "regularisation width of the mean at standstill")
+            .optional(0.01).above(0),
+    };
+    s.crossCheck = [](const ElementSpec& e) {
+        const double rows = e.number("rows");
+        if (rows != std::floor(rows)) throw e.error("rows", "must be a whole number");
+        const auto n = e.names("bodies").size();
+        if (n != 1 && static_cast<double>(n) != rows)
+            throw e.error("bodies", "give one body per row (" + std::to_string(static_cast<int>(rows)) +
+                                        ") or one body for all rows, got " + std::to_string(n));
+    };
+    registry.add({std::move(s), buildPeriodicLoad});
+}
+
+}  // namespace milldyn

@@ -1,0 +1,33 @@
+#include "plugins/scene/ElementRegistry.h"
+
+namespace milldyn {
+
+void registerInductionMotor(ElementRegistry& registry);
+void registerTorsionalCoupling(ElementRegistry& registry);
+void registerResistanceTorque(ElementRegistry& registry);
+void registerPeriodicLoad(ElementRegistry& registry);
+void registerGearMesh(ElementRegistry& registry);
+void registerSegmentCharge(ElementRegistry& registry);
+void registerCarrierDrive(ElementRegistry& registry);
+void registerJournalFriction(ElementRegistry& registry);
+void registerJointReaction(ElementRegistry& registry);
+void registerBeltDrive(ElementRegistry& registry);
+void registerDiscDrag(ElementRegistry& registry);
+void registerFlexibleRotor(ElementRegistry& registry);
+
+void registerBuiltinElements(ElementRegistry& registry) {
+    registerInductionMotor(registry);
+    registerTorsionalCoupling(registry);
+    registerResistanceTorque(registry);
+    registerPeriodicLoad(registry);
+    registerGearMesh(registry);
+    registerSegmentCharge(registry);
+    registerCarrierDrive(registry);
+    registerJournalFriction(registry);
+    registerJointReaction(registry);
+    registerBeltDrive(registry);
+    registerDiscDrag(registry);
+    registerFlexibleRotor(registry);
+}
+
+}  // namespace milldyn
