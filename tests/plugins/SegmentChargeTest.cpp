@@ -198,5 +198,42 @@ TEST(SegmentCharge, LagTableIsSmoothAndMonotone) {
     EXPECT_NEAR(left, right, 1e-4 * std::abs(left));
 }
 
+
+oracles::KlossMotor testMotor() { return {3858.0, 1485 * kPi / 30, 1500 * kPi / 30, 2.2}; }
+
+// The running speed of the mill driven by a Kloss motor, by hand: the
+// torque-arm torque m g r_c sin α referred to the motor through i = 82,
+// M_motor(ω) = M_charge/i solved in closed form on the stable branch.
+TEST(TumblingMill, KlossRunningSpeedByHand) {
+    for (const double lag : {30.0, 40.0}) {
+        const ModelSpec spec = readMill({{"lag: 40 deg", "lag: " + std::to_string(lag) + " deg"}});
+        auto scene = buildScene(spec);
+        const SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
+        const double T = oracles::torqueArmTorque(oracleCharge(0.30), lag * kDeg, kG);
+        const double expected = oracles::klossRunningSpeed(testMotor(), T / 82);
+        EXPECT_NEAR(pinSpeed(steady, scene->findBody("motor_shaft")->mobod), expected, 1e-9 * expected) << lag;
+        EXPECT_NEAR(pinSpeed(steady, scene->findBody("shell")->mobod), expected / 82, 1e-9 * expected / 82) << lag;
+    }
+}
+
+// A start from rest with the torque-arm charge, integrated: a high-slip
+// motor (rated 1350 rpm, λ = 2.5: 7.5 kN·m at standstill against the
+// charge's 2.8 kN·m on the motor shaft) runs the mill up; the energy balance
+// closes and the run ends at the hand-computed running speed.
+TEST(TumblingMill, StartFromRestClosesTheEnergyBalance) {
+    const ModelSpec spec = readMill({{"rated_speed: 1485 rpm", "rated_speed: 1350 rpm"},
+                                     {"breakdown_ratio: 2.2", "breakdown_ratio: 2.5"},
+                                     {"analysis: linearize", "analysis: transient\n  end_time: 6 s"}});
+    const AnalysisResult r = runAnalysis(spec);
+    ASSERT_NE(r.find("energy_balance_relative"), nullptr);
+    EXPECT_LT(std::abs(r.find("energy_balance_relative")->value), 1e-5);
+    const double T = oracles::torqueArmTorque(oracleCharge(0.30), 40 * kDeg, kG);
+    const double expected = oracles::klossRunningSpeed({3858.0, 1350 * kPi / 30, 1500 * kPi / 30, 2.5}, T / 82);
+    const double end = r.rows.back()[r.findColumn("motor_shaft.speed")];
+    EXPECT_NEAR(end, expected, 1e-4 * expected);
+    ASSERT_NE(r.find("energy_to_loads"), nullptr);
+    EXPECT_GT(r.find("energy_to_loads")->value, 0);
+}
+
 }  // namespace
 }  // namespace milldyn
