@@ -324,6 +324,14 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         // In steady running on a fixed axis the charge stands at its lag:
         // relative to the drum it turns back at the drum's speed.
         if (fixedAxis) scene.addSpeedRelation(spec.name, drum.name, -1.0);
+        if (p.motion == ChargeMotionMode::DynamicLag) {
+            // Steady running: the charge stands still in the carrier frame
+            // (at its running lag), it does not merely stop accelerating.
+            const MobilizedBody cb = chargeBody, c = carrier;
+            scene.addSteadyResidual({spec.name + ".speed_in_carrier_frame", [cb, c](const State& s) {
+                                         return cb.getBodyAngularVelocity(s)[2] - c.getBodyAngularVelocity(s)[2];
+                                     }});
+        }
     }
     // Schematic: the drum wall and the charge's segment where it is now.
     const MobilizedBody drumMobod = drum.mobod;

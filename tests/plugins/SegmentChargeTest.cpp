@@ -7,6 +7,7 @@
 #include "driver/SceneBuilder.h"
 #include "driver/Simulation.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/LinearModel.h"
 #include "plugins/charges/SegmentCharge.h"
 #include "validation/oracles/TumblingMillOracle.h"
 
@@ -233,6 +234,95 @@ TEST(TumblingMill, StartFromRestClosesTheEnergyBalance) {
     EXPECT_NEAR(end, expected, 1e-4 * expected);
     ASSERT_NE(r.find("energy_to_loads"), nullptr);
     EXPECT_GT(r.find("energy_to_loads")->value, 0);
+}
+
+// ---- linearize about the loaded running point (issue 19 item 5) ----
+
+/// The test mill with a two-stage drive: motor → reducer (ratio 5) →
+/// pinion → girth gear (ratio 16.4) → shell, the charge a torque arm.
+std::string threeInertiaMill(const std::string& charge) {
+    return millText({{"  - name: shell\n", "  - name: pinion\n    inertia: 8 kg*m^2\n    joint: {type: pin, parent: ground}\n"
+                                         "  - name: shell\n"},
+                     {"    name: drive\n    bodies: [motor_shaft, shell]\n    stiffness: 2.0e5 N*m/rad\n"
+                      "    damping: 200 N*m*s/rad\n    ratio: 82\n",
+                      "    name: reducer\n    bodies: [motor_shaft, pinion]\n    stiffness: 3.0e5 N*m/rad\n"
+                      "    ratio: 5\n  - type: TorsionalCoupling\n    name: girth\n    bodies: [pinion, shell]\n"
+                      "    stiffness: 4.0e6 N*m/rad\n    ratio: 16.4\n"},
+                     {"    lag: 40 deg\n", charge},
+                     {"analysis: linearize", "analysis: linearize\n  reference_shaft: motor_shaft"}});
+}
+
+// A 3-inertia geared chain at its loaded running point: the natural
+// frequencies and the mode shapes referred to the motor shaft against the
+// chain reduced by ratio² (oracle), the shell's inertia including the
+// charge's J_Bz (sector less triangle).
+TEST(TumblingMillLinearize, GearedChainAgainstRatioSquaredReduction) {
+    const ModelSpec spec = readModelText(threeInertiaMill("    lag: 40 deg\n"), "mill3.yaml", defaultModelReader());
+    const AnalysisResult r = runAnalysis(spec);
+    const oracles::GearedChain chain{{30.0, 8.0, 150000.0 + oracles::segmentAxisInertia(oracleCharge(0.30))},
+                                     {3.0e5, 4.0e6},
+                                     {5.0, 16.4}};
+    const std::vector<double> w = oracles::gearedChainFrequencies(chain);
+    const auto shapes = oracles::gearedChainModeShapes(chain);
+    ASSERT_EQ(r.columnNames, (std::vector<std::string>{"mode", "natural_frequency", "motor_shaft", "pinion", "shell"}));
+    ASSERT_EQ(r.rows.size(), 3u);
+    for (std::size_t m = 1; m < 3; ++m) {
+        EXPECT_NEAR(r.rows[m][1] * 2 * kPi, w[m], 1e-8 * w[m]) << m;
+        for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(r.rows[m][2 + k], shapes[m][k], 1e-7) << m << " " << k;
+    }
+    // The rigid rotation, referred: every shaft turns as the motor does.
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(r.rows[0][2 + k], 1.0, 1e-6) << k;
+    // The loaded point: the motor at the slip the charge's torque gives.
+    const double T = oracles::torqueArmTorque(oracleCharge(0.30), 40 * kDeg, kG);
+    const double speed = oracles::klossRunningSpeed(testMotor(), T / 82);
+    ASSERT_NE(r.find("operating_point.motor_shaft.speed"), nullptr);
+    EXPECT_NEAR(r.find("operating_point.motor_shaft.speed")->value, speed, 1e-9 * speed);
+    EXPECT_NEAR(r.find("operating_point.charge.lag")->value, 40 * kDeg, 1e-12);
+}
+
+// A lag that follows speed, linearized: the load's slope dM/dω =
+// m g r_c cos α · (dα/dφ)/ω_c is a damping on the shell. A two-point table
+// is a straight line (its Hermite slopes are the secant), so
+// dα/dφ = Δα/Δφ; the girth coupling adds n²·b... here b = 0, so
+// C(shell, shell) is the charge's alone.
+TEST(TumblingMillLinearize, SpeedDependentLagIsADamping) {
+    const ModelSpec spec = readModelText(
+        threeInertiaMill("    lag_table_speed: [0.5, 0.9]\n    lag_table_lag: [30 deg, 50 deg]\n"), "mill3.yaml",
+        defaultModelReader());
+    auto scene = buildScene(spec);
+    const SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
+    const LinearModel lm = linearizeScene(*scene, steady);
+    const double wc = oracles::criticalSpeed(3.0, kG);
+    const double omega = pinSpeed(steady, scene->findBody("shell")->mobod);
+    const double phi = omega / wc;
+    const double slope = (50 - 30) * kDeg / (0.9 - 0.5);
+    const double alpha = 30 * kDeg + (phi - 0.5) * slope;
+    const auto c = oracleCharge(0.30);
+    const double expected = oracles::segmentMass(c) * kG * oracles::segmentCentroidDistance(c) * std::cos(alpha) *
+                            slope / wc;
+    EXPECT_NEAR(lm.C(2, 2), expected, 1e-6 * expected);
+    EXPECT_EQ(lm.dofNames[2], "shell");
+    // And the running point: M(ω) = m g r_c sin α(φ)/82 on the motor.
+    const double T = oracles::segmentMass(c) * kG * oracles::segmentCentroidDistance(c) * std::sin(alpha);
+    EXPECT_NEAR(pinSpeed(steady, scene->findBody("motor_shaft")->mobod),
+                oracles::klossRunningSpeed(testMotor(), T / 82), 1e-8 * 157);
+}
+
+// A dynamic charge body is linearized at its running lag, not hanging:
+// steady, the wall drag c_w ω balances the weight's moment m g r_c sin α.
+TEST(TumblingMillLinearize, DynamicChargeAtItsRunningLag) {
+    const ModelSpec spec = readMill({{"motion: torque_arm", "motion: dynamic_lag"},
+                                     {"lag: 40 deg", "wall_drag: 1.0e5 N*m*s/rad"},
+                                     {"analysis: linearize", "analysis: linearize\n  reference_shaft: motor_shaft"}});
+    const AnalysisResult r = runAnalysis(spec);
+    const auto c = oracleCharge(0.30);
+    const double omega = r.find("operating_point.shell.speed")->value;
+    const double expected = std::asin(1.0e5 * omega / (oracles::segmentMass(c) * kG * oracles::segmentCentroidDistance(c)));
+    EXPECT_GT(expected, 20 * kDeg);
+    EXPECT_NEAR(r.find("operating_point.charge.lag")->value, expected, 1e-9);
+    // Standing still in space: relative to the shell it turns back at ω.
+    EXPECT_NEAR(r.find("operating_point.charge.speed")->value, -omega, 1e-9);
+    EXPECT_EQ(r.columnNames, (std::vector<std::string>{"mode", "natural_frequency", "motor_shaft", "shell", "charge"}));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -40,6 +41,13 @@ double segmentCentroidDistance(const CircularSegmentCharge& c) {
     return 4 * c.drumRadius * s * s * s / (3 * (t - std::sin(t)));
 }
 
+double segmentAxisInertia(const CircularSegmentCharge& c) {
+    const double t = segmentCentralAngle(c.fill), R = c.drumRadius;
+    const double sector = R * R * R * R * t / 4;
+    const double triangle = R * R * R * R * std::sin(t) * (2 + std::cos(t)) / 12;
+    return c.bulkDensity * c.length * (sector - triangle);
+}
+
 double segmentMass(const CircularSegmentCharge& c) { return c.bulkDensity * c.length * segmentArea(c); }
 
 double criticalSpeed(double drumDiameter, double g) { return std::sqrt(2 * g / drumDiameter); }
@@ -62,7 +70,8 @@ double klossRunningSpeed(const KlossMotor& m, double loadTorque) {
     return m.synchronousSpeed * (1 - s);
 }
 
-std::vector<double> gearedChainFrequencies(const GearedChain& chain) {
+namespace {
+Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solveChain(const GearedChain& chain) {
     const std::size_t n = chain.inertias.size();
     if (n == 0 || chain.stiffnesses.size() + 1 != n || chain.ratios.size() + 1 != n)
         throw std::invalid_argument("GearedChain: n inertias need n - 1 stiffnesses and ratios");
@@ -82,10 +91,29 @@ std::vector<double> gearedChainFrequencies(const GearedChain& chain) {
             N *= chain.ratios[k];
         }
     }
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(K, M);
+    return Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd>(K, M);
+}
+}  // namespace
+
+std::vector<double> gearedChainFrequencies(const GearedChain& chain) {
+    const auto eig = solveChain(chain);
     std::vector<double> w;
-    for (Eigen::Index i = 0; i < eig.eigenvalues().size(); ++i) w.push_back(std::sqrt(std::max(0.0, eig.eigenvalues()[i])));
+    for (Eigen::Index i = 0; i < eig.eigenvalues().size(); ++i)
+        w.push_back(std::sqrt(std::max(0.0, eig.eigenvalues()[i])));
     return w;
+}
+
+std::vector<std::vector<double>> gearedChainModeShapes(const GearedChain& chain) {
+    const auto eig = solveChain(chain);
+    std::vector<std::vector<double>> shapes;
+    for (Eigen::Index m = 0; m < eig.eigenvectors().cols(); ++m) {
+        Eigen::VectorXd v = eig.eigenvectors().col(m);
+        Eigen::Index at = 0;
+        v.cwiseAbs().maxCoeff(&at);
+        v /= v[at];
+        shapes.emplace_back(v.data(), v.data() + v.size());
+    }
+    return shapes;
 }
 
 }  // namespace milldyn::oracles

@@ -30,6 +30,10 @@ double segmentCentralAngle(double fill);
 double segmentArea(const CircularSegmentCharge& c);
 /// Centroid distance from the centre [m]: ȳ = 4 R sin³(θ/2) / (3 (θ − sin θ)).
 double segmentCentroidDistance(const CircularSegmentCharge& c);
+/// Polar moment of the segment about the drum axis [kg*m^2]: the sector's
+/// ρL R⁴θ/4 less the triangle's ρL R⁴ sin θ (2 + cos θ)/12 (vertex formula
+/// J_O = A (a·a + a·b + b·b)/6).
+double segmentAxisInertia(const CircularSegmentCharge& c);
 /// Mass [kg]: ρ L A.
 double segmentMass(const CircularSegmentCharge& c);
 
@@ -65,5 +69,8 @@ struct GearedChain {
 /// included: every shaft referred to shaft 0 (J_k/N_k², c_k/N_k² with
 /// N_k the product of the ratios up to k), then K v = ω² M v.
 std::vector<double> gearedChainFrequencies(const GearedChain& chain);
+/// The mode shapes of the same eigenproblem in the referred angles θ_k
+/// (columns in the order of the frequencies, each scaled to max |entry| = 1).
+std::vector<std::vector<double>> gearedChainModeShapes(const GearedChain& chain);
 
 }  // namespace milldyn::oracles
