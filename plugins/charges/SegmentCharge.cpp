@@ -223,6 +223,24 @@ const std::map<std::string, std::set<std::string>>& keysOfMotion() {
     return keys;
 }
 
+/// A key the motion does not use is an error naming the motion. Checked
+/// when the element is built, not when the file is read: a model's other
+/// fidelity levels may hold an element of the same name with another
+/// motion, which `--set elements.NAME.KEY` also reaches.
+void checkKeysOfMotion(const ElementSpec& e) {
+    const std::string& motion = e.text("motion");
+    const std::set<std::string>& own = keysOfMotion().at(motion);
+    for (const auto& [key, value] : e.params) {
+        if (!value.given || own.count(key)) continue;
+        bool usedElsewhere = false;
+        for (const auto& [other, keys] : keysOfMotion()) usedElsewhere = usedElsewhere || keys.count(key);
+        if (!usedElsewhere) continue;
+        std::string list;
+        for (const auto& k : own) list += (list.empty() ? "" : ", ") + k;
+        throw e.error(key, "not used with motion: " + motion + " (it takes " + list + ")");
+    }
+}
+
 ChargeMotionMode motionOf(const std::string& word) {
     if (word == "held") return ChargeMotionMode::Held;
     if (word == "dynamic_lag") return ChargeMotionMode::DynamicLag;
@@ -252,6 +270,7 @@ void addToDrum(MobilizedBody& drumBody, double m, const Vec3& comInDrum, double 
 }
 
 void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
+    checkKeysOfMotion(spec);
     // Copies, not a pointer into the scene's body list: adding the charge's
     // body below may move that list.
     const SceneBody drum = *scene.findBody(spec.text("drum"));
@@ -386,8 +405,7 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                                  return impl->calcWallTorque(s) * impl->calcSlipSpeed(s);
                              }});
     }
-    const std::string where = " (" + spec.name + ", SegmentCharge)";
-    scene.addDerivedValue({spec.name + ".mass", m, "kg", "m_z = ρ l r² (2γ − sin 2γ)/2 (seed 000 eq 3)" + where});
+    scene.addDerivedValue({spec.name + ".mass", m, "kg", "m_z = ρ l r² (2γ − sin 2γ)/2 (seed 000 eq 3)"});
     scene.addDerivedValue({spec.name + ".centroid_radius", lc, "m",
                            "l_c = 4 r sin³γ / (3 (2γ − sin 2γ)), centroid from the drum axis (seed 000 eq 6)"});
     scene.addDerivedValue({spec.name + ".half_angle", p.halfAngle, "rad", "γ, the segment's half-angle"});
@@ -407,8 +425,8 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                    ? "charge " + spec.name + " (SegmentCharge, torque_arm) on " + drum.name + ", no body"
                    : "body " + spec.name + " (SegmentCharge, " + motion + ")",
                "charge of " + drum.name + ": " + std::to_string(m) + " kg, centroid " + std::to_string(lc) +
-                   " m from the axis, half-angle " + std::to_string(p.halfAngle * 180 / M_PI) + " deg, lag " +
-                   convention +
+                   " m from the axis, half-angle " + std::to_string(p.halfAngle * 180 / M_PI) + " deg" +
+                   (p.motion == ChargeMotionMode::WithDrum ? std::string() : std::string(", lag ") + convention) +
                    (p.motion == ChargeMotionMode::WithDrum
                         ? "; turns with its drum, so its mass is the drum's (no body of its own)"
                     : p.motion == ChargeMotionMode::TorqueArm
@@ -449,20 +467,6 @@ void registerSegmentCharge(ElementRegistry& registry) {
     };
     s.crossCheck = [](const ElementSpec& e) {
         const std::string& motion = e.text("motion");
-        const std::set<std::string>& own = keysOfMotion().at(motion);
-        for (const auto& [key, value] : e.params) {
-            if (!value.given || !keysOfMotion().count(motion)) continue;
-            bool usedElsewhere = false;
-            for (const auto& [other, keys] : keysOfMotion()) usedElsewhere = usedElsewhere || keys.count(key);
-            if (usedElsewhere && !own.count(key))
-                throw e.error(key, "not used with motion: " + motion + " (it takes " +
-                                       [&] {
-                                           std::string list;
-                                           for (const auto& k : own) list += (list.empty() ? "" : ", ") + k;
-                                           return list;
-                                       }() +
-                                       ")");
-        }
         if (motion == "dynamic_lag" && !(e.number("wall_drag") > 0))
             throw e.error("wall_drag", "motion: dynamic_lag needs a wall_drag > 0 N*m*s/rad");
         if (e.params.at("initial_lag").given && e.params.at("initial_direction").given)

@@ -121,6 +121,8 @@ TEST(SegmentCharge, SameLagWhereverTheMillStands) {
         scene->system().realize(s, SimTK::Stage::Acceleration);
         EXPECT_NEAR(probe(*scene, s, "charge.lag"), 40 * kDeg, 1e-13) << at;
         const AnalysisResult r = runAnalysis(spec);
+        ASSERT_NE(r.find("energy_balance_relative"), nullptr);
+        EXPECT_LT(std::abs(r.find("energy_balance_relative")->value), 1e-5) << at;
         const auto& last = r.rows.back();
         finals.push_back({last[r.findColumn("charge.lag")], last[r.findColumn("shell.speed")],
                           last[r.findColumn("charge.grinding_power")]});
