@@ -238,6 +238,20 @@ TEST(TumblingMill, StartFromRestClosesTheEnergyBalance) {
     EXPECT_GT(r.find("energy_to_loads")->value, 0);
 }
 
+// Bearing load: the torque-arm charge's weight reaches the shell's pin
+// (its mass is on the shell's axis, the couple moves its line of action):
+// at steady running the pin carries (m_shell + m) g straight up and no
+// horizontal force, as statics of shell plus a charge at rest says.
+TEST(SegmentCharge, TorqueArmWeightLoadsTheShellBearing) {
+    const ModelSpec spec = readMill({{"scenario:", "  - {type: JointReaction, name: trunnion, body: shell}\nscenario:"}});
+    auto scene = buildScene(spec);
+    SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
+    scene->system().realize(steady, SimTK::Stage::Acceleration);
+    const double weight = (60000 + oracles::segmentMass(oracleCharge(0.30))) * kG;
+    EXPECT_NEAR(probe(*scene, steady, "trunnion.on_shell_at_axis_y_ground"), weight, 1e-9 * weight);
+    EXPECT_NEAR(probe(*scene, steady, "trunnion.on_shell_at_axis_x_ground"), 0.0, 1e-9 * weight);
+}
+
 // ---- linearize about the loaded running point (issue 19 item 5) ----
 
 /// The test mill with a two-stage drive: motor → reducer (ratio 5) →
