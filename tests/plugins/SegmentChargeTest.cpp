@@ -252,6 +252,22 @@ TEST(SegmentCharge, TorqueArmWeightLoadsTheShellBearing) {
     EXPECT_NEAR(probe(*scene, steady, "trunnion.on_shell_at_axis_x_ground"), 0.0, 1e-9 * weight);
 }
 
+// A held charge body on a fixed axis (lag from the vertical), solved by
+// kinetostatics at four shell angles: the wall torque that holds it is the
+// same weight's moment m g r_c sin α the torque-arm law applies.
+TEST(SegmentCharge, HeldOnAFixedAxisNeedsTheTorqueArmTorque) {
+    const ModelSpec spec = readMill({{"motion: torque_arm", "motion: held"},
+                                     {"analysis: linearize", "analysis: kinetostatic\n  carrier: shell\n"
+                                                             "  carrier_speed: 1.9 rad/s\n  angle_points: 4"}});
+    const AnalysisResult r = runAnalysis(spec);
+    const double T = oracles::torqueArmTorque(oracleCharge(0.30), 40 * kDeg, kG);
+    ASSERT_EQ(r.rows.size(), 4u);
+    for (const auto& row : r.rows) {
+        EXPECT_NEAR(row[r.findColumn("charge.wall_torque")], T, 1e-9 * T);
+        EXPECT_NEAR(row[r.findColumn("charge.lag")], 40 * kDeg, 1e-12);
+    }
+}
+
 // ---- linearize about the loaded running point (issue 19 item 5) ----
 
 /// The test mill with a two-stage drive: motor → reducer (ratio 5) →
