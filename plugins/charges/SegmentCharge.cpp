@@ -248,6 +248,18 @@ ChargeMotionMode motionOf(const std::string& word) {
     return ChargeMotionMode::WithDrum;
 }
 
+/// Whether a body's pin axis stays put in ground: it is on ground, or on the
+/// axis of a body whose axis stays put (a shell on a girth-gear body on
+/// ground). A drum off its parent's axis is carried round it.
+bool axisIsFixed(const MobilizedBody& body) {
+    if (body.isGround()) return true;
+    const MobilizedBody parent = body.getParentMobilizedBody();
+    if (parent.isGround()) return true;
+    const Vec3 offset = body.getDefaultInboardFrame().p();
+    if (std::hypot(offset[0], offset[1]) > 0) return false;
+    return axisIsFixed(parent);
+}
+
 /// The gravity of the scene's UniformGravity (zero if none).
 Vec3 sceneGravity(Scene& scene) {
     const GeneralForceSubsystem& forces = scene.forces();
@@ -275,7 +287,7 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     // body below may move that list.
     const SceneBody drum = *scene.findBody(spec.text("drum"));
     const MobilizedBody carrier = drum.mobod.getParentMobilizedBody();
-    const bool fixedAxis = carrier.isGround();
+    const bool fixedAxis = axisIsFixed(drum.mobod);
     SegmentChargeParams p;
     p.drumRadius = spec.number("drum_radius");
     p.length = spec.number("length");
@@ -294,7 +306,7 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                                               : LagReference::CarrierRadius;
     if (p.lagFrom == LagReference::CarrierRadius && fixedAxis)
         throw spec.error("lag_from", "carrier_radius is measured from the line carrier axis -> drum axis, and drum '" +
-                                         drum.name + "' turns on a pin on ground (no carrier): use lag_from: vertical");
+                                         drum.name + "' turns about a fixed axis (no carrier): use lag_from: vertical");
     if (p.motion == ChargeMotionMode::TorqueArm && p.lagFrom != LagReference::Vertical)
         throw spec.error("lag_from", "motion: torque_arm holds the charge at a lag from the vertical (the weight's "
                                      "torque arm): use lag_from: vertical");
@@ -318,6 +330,9 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     const double centralPolar = impl->calcAxisInertia() - m * lc * lc;
     MobilizedBody drumBody = drum.mobod;  // handles: a copy is the body
     MobilizedBody chargeBody;
+    // The frame a held or steady charge stands still in: ground on a fixed
+    // axis (even a drum on a coaxial body), the carrier on a carried one.
+    const MobilizedBody reference = fixedAxis ? MobilizedBody(scene.matter().getGround()) : carrier;
     if (p.motion == ChargeMotionMode::WithDrum) {
         // Turns with the drum, its centroid at initial_direction in the drum
         // frame: its mass properties are added to the drum's instead of a
@@ -342,11 +357,11 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         scene.addBody(spec.name, chargeBody);
         // In steady running on a fixed axis the charge stands at its lag:
         // relative to the drum it turns back at the drum's speed.
-        if (fixedAxis) scene.addSpeedRelation(spec.name, drum.name, -1.0);
+        if (carrier.isGround()) scene.addSpeedRelation(spec.name, drum.name, -1.0);
         if (p.motion == ChargeMotionMode::DynamicLag) {
             // Steady running: the charge stands still in the carrier frame
             // (at its running lag), it does not merely stop accelerating.
-            const MobilizedBody cb = chargeBody, c = carrier;
+            const MobilizedBody cb = chargeBody, c = reference;
             scene.addSteadyResidual({spec.name + ".speed_in_carrier_frame", [cb, c](const State& s) {
                                          return cb.getBodyAngularVelocity(s)[2] - c.getBodyAngularVelocity(s)[2];
                                      }});
@@ -370,24 +385,28 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         const MobilizedBody cb = chargeBody, d = drum.mobod;
         const bool held = p.motion == ChargeMotionMode::Held;
         const System* system = &scene.system();
-        scene.addInitializer([impl, cb, d, held, system, initialLagGiven, initialLag](State& s) {
+        scene.addInitializer([impl, cb, d, reference, held, system, initialLagGiven, initialLag](State& s) {
             const SegmentChargeParams& q = impl->params();
             system->realize(s, Stage::Position);
             const double direction = held              ? impl->calcDirectionOfLag(s, q.lag)
                                      : initialLagGiven ? impl->calcDirectionOfLag(s, initialLag)
                                                        : q.initialDirection;
             cb.setOneQ(s, kQ, impl->calcRelativeAngleFor(s, direction));
-            // Held: still in the carrier frame; dynamic: starts with the drum.
-            cb.setOneU(s, kU, held ? -d.getOneU(s, kU) : 0.0);
+            // Held: still in its reference frame; dynamic: starts with the drum.
+            system->realize(s, Stage::Velocity);
+            const double still = reference.getBodyAngularVelocity(s)[2] - d.getBodyAngularVelocity(s)[2];
+            cb.setOneU(s, kU, held ? still : 0.0);
         });
     }
     if (p.motion == ChargeMotionMode::Held) {
-        const MobilizedBody cb = chargeBody, d = drum.mobod;
+        const MobilizedBody cb = chargeBody;
         scene.addKinetostaticUnknown(
             {spec.name + ".wall_torque", [impl](State& s, double T) { impl->setHeldTorque(s, T); },
              [impl](const State& s) { return impl->getHeldTorque(s); },
-             // the charge's angular acceleration in the carrier frame
-             [cb, d](const State& s) { return d.getOneUDot(s, kU) + cb.getOneUDot(s, kU); }});
+             // the charge's angular acceleration in its reference frame
+             [cb, reference](const State& s) {
+                 return cb.getBodyAngularAcceleration(s)[2] - reference.getBodyAngularAcceleration(s)[2];
+             }});
     }
     scene.addProbe({spec.name + ".lag", "rad", ProbeRole::Generic, Stage::Position,
                     [impl](const State& s) { return impl->calcLag(s); }});

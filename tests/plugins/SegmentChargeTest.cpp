@@ -268,6 +268,27 @@ TEST(SegmentCharge, HeldOnAFixedAxisNeedsTheTorqueArmTorque) {
     }
 }
 
+// A drum on a coaxial body (a shell on a girth-gear body turning about the
+// same fixed axis) is not carried: the lag is from the vertical by default,
+// and the papers' convention is refused there too.
+TEST(SegmentCharge, DrumOnACoaxialBodyHasAFixedAxis) {
+    const std::vector<std::pair<std::string, std::string>> coaxial = {
+        {"  - name: shell\n", "  - name: gear\n    inertia: 10 kg*m^2\n    joint: {type: pin, parent: ground}\n"
+                              "  - name: shell\n"},
+        {"joint: {type: pin, parent: ground, location: [0 m, 0 m, 0 m]}", "joint: {type: pin, parent: gear}"},
+        {"    lag_from: vertical\n", ""},
+        {"motion: torque_arm", "motion: dynamic_lag"},
+        {"lag: 40 deg", "initial_lag: 40 deg\n    wall_drag: 1.0e5 N*m*s/rad"}};
+    const ModelSpec spec = readMill(coaxial);
+    auto scene = buildScene(spec);
+    SimTK::State s = initialState(*scene, spec);
+    scene->system().realize(s, SimTK::Stage::Acceleration);
+    EXPECT_NEAR(probe(*scene, s, "charge.lag"), 40 * kDeg, 1e-13);
+    auto refused = coaxial;
+    refused.push_back({"    motion: dynamic_lag", "    lag_from: carrier_radius\n    motion: dynamic_lag"});
+    EXPECT_THROW(buildScene(readMill(refused)), SpecError);
+}
+
 // ---- linearize about the loaded running point (issue 19 item 5) ----
 
 /// The test mill with a two-stage drive: motor → reducer (ratio 5) →
