@@ -256,15 +256,16 @@ def test_sweep_gives_the_cli_table(tmp_path, monkeypatch):
 
 
 def test_validate_gives_the_cli_rows():
-    r = cli("validate", "--filter", "burr_mill_table1", "--json")
+    r = cli("validate", "--filter", "burr_mill_coastdown", "--json")
     assert r.returncode == 0, r.stderr
     expected = json.loads(r.stdout)
-    rows = milldyn.validate("burr_mill_table1")
+    rows = milldyn.validate("burr_mill_coastdown")
     assert len(rows) == len(expected) > 0
     for ours, theirs in zip(rows, expected):
         assert ours["case"] == theirs["case"]
         assert ours["status"] == theirs["status"]
         assert ours["oracle"] == theirs["oracle"]
+        assert ours["multibody"] == theirs.get("multibody")
 
 
 def test_elements_lists_every_registered_type_with_keys_units_defaults_ranges():
