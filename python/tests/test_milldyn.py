@@ -289,3 +289,44 @@ def test_plugin_element_runs():
     assert "ConstantTorque" in milldyn.elements()
     # ω(1 s) = M·t/J = 3·1/2 = 1.5 rad/s (the closed form of PluginTest).
     assert model.run().summary["steady_speed"] == pytest.approx(1.5, abs=1e-12)
+
+
+@pytest.mark.skipif(not os.environ.get("MILLDYN_BUILD_DIR"), reason="MILLDYN_BUILD_DIR not set")
+def test_installs_into_a_prefix(tmp_path):
+    import sys
+    r = subprocess.run([os.environ.get("MILLDYN_CMAKE", "cmake"), "--install", os.environ["MILLDYN_BUILD_DIR"],
+                        "--prefix", str(tmp_path / "prefix")], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    site = tmp_path / "prefix" / "lib" / "python3" / "dist-packages"
+    code = ("import milldyn; print(milldyn.__file__); "
+            "print(milldyn.Model(%r, set={'scenario.end_time': '4.1 s'}).run().summary['steady_speed'].unit)" % IDLE)
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path,
+                       env=dict(os.environ, PYTHONPATH=str(site)))
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.split("\n")[:2] == [str(site / "milldyn" / "__init__.py"), "rad/s"]
+
+
+UNSTABLE = """format_version: 1
+name: unstable
+bodies:
+  - {name: a, inertia: 0.01 kg*m^2, joint: {type: pin}, initial_angle: 0.001 rad}
+  - {name: b, inertia: 0.01 kg*m^2, joint: {type: pin}}
+elements:
+  - {type: TorsionalCoupling, name: shaft, bodies: [a, b], stiffness: 1e9 N*m/rad}
+scenario: {analysis: transient, initial_state: file, end_time: 5 s}
+integrator: {name: SemiExplicitEuler, max_step: 10 ms}
+outputs: {sample_interval: 10 ms, plots: false}
+"""
+
+
+def test_a_failed_analysis_raises_with_the_cli_text(tmp_path):
+    # Semi-explicit Euler at 10 ms on a 4.5e5 rad/s mode (tests/driver/DivergenceTest.cpp).
+    path = tmp_path / "unstable.yaml"
+    path.write_text(UNSTABLE)
+    r = cli("run", path, "--out", tmp_path / "o")
+    assert r.returncode == 1
+    with pytest.raises(milldyn.AnalysisFailed) as e:
+        milldyn.Model(path).run(out=tmp_path / "py")
+    assert e.value.text == r.stderr.strip()
+    assert "not finite" in e.value.reason and "t = " in e.value.reason
+    assert not (tmp_path / "py").exists()
