@@ -306,27 +306,15 @@ def test_installs_into_a_prefix(tmp_path):
     assert r.stdout.split("\n")[:2] == [str(site / "milldyn" / "__init__.py"), "rad/s"]
 
 
-UNSTABLE = """format_version: 1
-name: unstable
-bodies:
-  - {name: a, inertia: 0.01 kg*m^2, joint: {type: pin}, initial_angle: 0.001 rad}
-  - {name: b, inertia: 0.01 kg*m^2, joint: {type: pin}}
-elements:
-  - {type: TorsionalCoupling, name: shaft, bodies: [a, b], stiffness: 1e9 N*m/rad}
-scenario: {analysis: transient, initial_state: file, end_time: 5 s}
-integrator: {name: SemiExplicitEuler, max_step: 10 ms}
-outputs: {sample_interval: 10 ms, plots: false}
-"""
-
-
 def test_a_failed_analysis_raises_with_the_cli_text(tmp_path):
-    # Semi-explicit Euler at 10 ms on a 4.5e5 rad/s mode (tests/driver/DivergenceTest.cpp).
-    path = tmp_path / "unstable.yaml"
-    path.write_text(UNSTABLE)
-    r = cli("run", path, "--out", tmp_path / "o")
+    # Semi-explicit Euler at 100 ms steps on the belt mode (about 180 rad/s):
+    # far outside its stability limit (omega*h < 2), the motion overflows.
+    unstable = {"integrator.name": "SemiExplicitEuler", "integrator.max_step": "100 ms",
+                "elements.motor.switch_off_time": "100 s", "scenario.end_time": "100 s", "outputs.plots": "false"}
+    r = cli("run", IDLE, "--out", tmp_path / "o", *cli_sets(unstable))
     assert r.returncode == 1
     with pytest.raises(milldyn.AnalysisFailed) as e:
-        milldyn.Model(path).run(out=tmp_path / "py")
+        milldyn.Model(IDLE, set=unstable).run(out=tmp_path / "py")
     assert e.value.text == r.stderr.strip()
-    assert "not finite" in e.value.reason and "t = " in e.value.reason
+    assert "not finite" in e.value.reason and "t = " in e.value.reason and "motor_shaft" in e.value.reason
     assert not (tmp_path / "py").exists()
