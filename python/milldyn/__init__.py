@@ -20,6 +20,7 @@ import os
 import shutil
 import sys
 import tempfile
+import threading
 
 # Plugin libraries (plugins=[...]) resolve the registry's symbols from the
 # module, as they do from the milldyn executable: load it RTLD_GLOBAL.
@@ -245,7 +246,6 @@ class Model:
         ``cancel``: a CancelToken another thread may set."""
         extra = _overrides(set, scenario, preset, integrator=integrator, accuracy=accuracy, end_time=end_time)
         spec = _core.read_model(self.path, self.overrides + extra) if extra else self._spec
-        import threading
         on_main = threading.current_thread() is threading.main_thread()
         result = Result(self, _core.run(spec, cancel, on_main))
         if out is not None:
