@@ -71,9 +71,7 @@ def _text(value):
         return str(int(value))
     if isinstance(value, (float, _np.floating)):
         return repr(float(value))
-    if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_text(v) for v in value) + "]"
-    raise TypeError("an override's value must be a number (SI) or text with a unit, got %r" % (value,))
+    raise TypeError("an override's value must be one number (SI) or text with a unit, got %r" % (value,))
 
 
 def _overrides(set=None, scenario=None, preset=None, **options):

@@ -136,6 +136,8 @@ def test_bad_input_raises_model_error_with_the_cli_text(tmp_path):
         milldyn.Model(tmp_path / "missing.yaml")
     with pytest.raises(TypeError):
         milldyn.Model(IDLE, set={"scenario.end_time": object()})
+    with pytest.raises(TypeError):
+        milldyn.Model(IDLE, set={"scenario.end_time": [1, 2]})
 
 
 def test_info_is_what_the_cli_shows():
