@@ -1,5 +1,6 @@
 #include "driver/Cli.h"
 
+#include "driver/Api.h"
 #include "driver/ModelFile.h"
 #include "driver/SceneBuilder.h"
 #include "driver/PluginLoader.h"
@@ -23,8 +24,6 @@
 
 namespace milldyn {
 namespace {
-
-constexpr const char* kVersion = "0.1.0";
 
 const char* kUsage =
     "usage:\n"
@@ -145,14 +144,8 @@ std::string describeValue(const std::string& name, double v, const std::string& 
     return s.str();
 }
 
-std::string hostName() {
-    char buf[256] = {0};
-    if (::gethostname(buf, sizeof buf - 1) != 0) return "unknown";
-    return buf;
-}
-
 int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
-    const ModelSpec spec = readModelFile(a.model, defaultModelReader(), a.overrides);
+    const ModelSpec spec = readModel(a.model, a.overrides);
     ensureDirectory(a.outDir);
     const bool showProgress = !a.quiet && ::isatty(STDERR_FILENO);
     auto lastReport = std::chrono::steady_clock::now();
@@ -179,28 +172,13 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
                              " (no element of it draws itself; GearMesh, SegmentCharge, BeltDrive and JointReaction do)");
         observer = [&](const Scene& scene, const SimTK::State& s, double key) { recorder->observe(scene, s, key); };
     }
-    const auto start = std::chrono::steady_clock::now();
-    AnalysisResult result = runAnalysis(spec, progress, observer);
-    // What the preset picked, in the printed summary and summary.json.
-    if (!spec.preset.empty()) {
-        std::ostringstream picked;
-        picked << "preset " << spec.preset << ": " << spec.integrator.name << " " << spec.integrator.accuracy;
-        if (spec.integrator.maxStep > 0) picked << ", max_step " << spec.integrator.maxStep << " s";
-        if (!spec.fidelity.empty()) picked << ", fidelity " << spec.fidelity;
-        picked << " (" << spec.presetWhy << ")";
-        result.notes.insert(result.notes.begin(), picked.str());
-    }
+    const RunOutcome run = runModel(spec, progress, observer);
+    const AnalysisResult& result = run.result;
+    const RunInfo& info = run.info;
     if (showProgress) err << "\r" << std::string(40, ' ') << "\r";
-    RunInfo info;
-    info.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    info.host = hostName();
-    info.version = kVersion;
-    for (const auto& r : result.results)
-        if (!std::isfinite(r.value))
-            throw AnalysisError("result " + r.name + " is not finite (the analysis diverged)");
 
     std::string warning;
-    auto files = writeResultFiles(a.outDir, spec, result, info, warning);
+    auto files = writeRunFiles(a.outDir, spec, run, warning);
     if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
     if (recorder) {
         std::string w;
@@ -226,73 +204,53 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
 }
 
 int commandInfo(const Arguments& a, std::ostream& out) {
-    const ModelSpec spec = readModelFile(a.model, defaultModelReader(), a.overrides);
-    auto scene = buildScene(spec);
-    const SimTK::State state = scene->system().getDefaultState();
-    out << spec.name << " (" << spec.file << ")\n";
-    out << "  bodies: " << scene->bodies().size() << ", mobilities (DOF): " << state.getNU()
-        << ", constraints: " << scene->matter().getNumConstraints()
-        << ", forces: " << scene->forces().getNumForces() << "\n";
-    for (const auto& b : spec.bodies)
-        out << "  body " << b.name << ": pin on " << b.joint.parent << ", inertia " << b.inertia << " kg*m^2\n";
-    for (const auto& e : spec.elements) out << "  element " << e.name << ": " << e.type << "\n";
-    out << "  scenario: " << spec.scenario.type << ", integrator " << spec.integrator.name << " at accuracy "
-        << spec.integrator.accuracy;
-    if (spec.integrator.maxStep > 0) out << ", max_step " << spec.integrator.maxStep << " s";
-    if (!spec.fidelity.empty()) out << ", fidelity " << spec.fidelity;
+    const ModelInfo info = describeModel(readModel(a.model, a.overrides));
+    out << info.name << " (" << info.file << ")\n";
+    out << "  bodies: " << info.bodies << ", mobilities (DOF): " << info.mobilities
+        << ", constraints: " << info.constraints << ", forces: " << info.forces << "\n";
+    for (const auto& b : info.bodyList)
+        out << "  body " << b.name << ": pin on " << b.parent << ", inertia " << b.inertia << " kg*m^2\n";
+    for (const auto& e : info.elements) out << "  element " << e.name << ": " << e.type << "\n";
+    out << "  scenario: " << info.scenario << ", integrator " << info.integrator << " at accuracy " << info.accuracy;
+    if (info.maxStep > 0) out << ", max_step " << info.maxStep << " s";
+    if (!info.fidelity.empty()) out << ", fidelity " << info.fidelity;
     out << "\n";
-    if (!spec.presetNames.empty()) {
+    if (!info.presets.empty()) {
         out << "  presets:";
-        for (const auto& p : spec.presetNames) out << " " << p;
+        for (const auto& p : info.presets) out << " " << p;
         out << "\n";
     }
-    if (!spec.preset.empty()) out << "  preset " << spec.preset << ": " << spec.presetWhy << "\n";
-    if (!scene->derivedValues().empty()) {
+    if (!info.preset.empty()) out << "  preset " << info.preset << ": " << info.presetWhy << "\n";
+    if (!info.derived.empty()) {
         out << "  derived values:\n";
-        for (const auto& d : scene->derivedValues()) {
+        for (const auto& d : info.derived) {
             std::ostringstream v;
             v << std::setprecision(17) << d.value;
             out << "    " << d.name << " = " << v.str() << " " << d.unit << " — " << d.doc << "\n";
         }
     }
     out << "  built:\n";
-    for (const auto& n : scene->notes()) out << "    " << n.what << " — " << n.why << "\n";
-    if (!spec.notBuilt.empty() || !scene->omitted().empty()) {
+    for (const auto& n : info.built) out << "    " << n.what << " — " << n.why << "\n";
+    if (!info.notBuilt.empty()) {
         out << "  not built:\n";
-        for (const auto& n : spec.notBuilt) out << "    " << n.what << " — " << n.why << "\n";
-        for (const auto& n : scene->omitted()) out << "    " << n.what << " — " << n.why << "\n";
+        for (const auto& n : info.notBuilt) out << "    " << n.what << " — " << n.why << "\n";
     }
-    if (spec.scenario.type == "transient") {
-        const std::string why = whyNoReplay(*scene, initialState(*scene, spec));
-        out << "  time integration: "
-            << (spec.scenario.text("zero_dof") == "integrate" ? "integrated (zero_dof: integrate)"
-                : why.empty() ? "none: no free degrees of freedom, the run is replayed at the samples"
-                              : why)
-            << "\n";
-    } else if (spec.scenario.type == "coastdown_identify") {
-        out << "  time integration: integrated (run-outs after a switch-off)\n";
-    } else if (spec.scenario.type == "frequency_response") {
-        out << "  time integration: only the optional time-domain check of the linear response\n";
-    } else {
-        out << "  time integration: none (" << spec.scenario.type << " analysis)\n";
-    }
+    out << "  time integration: " << info.timeIntegration << "\n";
     out << "  outputs:";
-    for (const auto& p : scene->probes()) out << " " << p.name << "[" << p.unit << "]";
+    for (const auto& p : info.outputs) out << " " << p.name << "[" << p.unit << "]";
     out << "\n";
     return 0;
 }
 
 int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
-    if (a.grids.empty() == (a.lhs == 0))
-        throw UsageError("sweep needs --grid path=a:b:n ... or --lhs N with --range path=a:b ...");
-    if (a.lhs > 0 && a.ranges.empty()) throw UsageError("--lhs needs at least one --range path=a:b");
-    if (!a.grids.empty() && !a.ranges.empty()) throw UsageError("--range goes with --lhs, not with --grid");
-    std::vector<SweepAxis> axes;
-    for (const auto& g : a.grids) axes.push_back(parseGrid(g));
-    for (const auto& r : a.ranges) axes.push_back(parseRange(r));
-    const SweepPlan plan = a.lhs > 0 ? makeLatinHypercube(axes, a.lhs, a.seed) : makeGrid(axes);
+    SweepPlan plan;
+    try {
+        plan = makeSweepPlan(a.grids, a.ranges, a.lhs, a.seed);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
     // The model must read before hundreds of points report the same error.
-    readModelFile(a.model, defaultModelReader(), a.overrides);
+    readModel(a.model, a.overrides);
 
     SweepOptions options;
     options.model = a.model;
@@ -369,7 +327,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
             return 0;
         }
         if (!args.empty() && args[0] == "--version") {
-            out << "milldyn " << kVersion << "\n";
+            out << "milldyn " << milldynVersion() << "\n";
             return 0;
         }
         const Arguments a = parseArguments(args);

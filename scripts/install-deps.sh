@@ -11,6 +11,8 @@ packages=(
   openmpi-bin libopenmpi-dev
   chromium python3   # the validation report's render test (tests/report/render_check.sh)
   librsvg2-bin       # rsvg-convert: PNG copies of `run --schematic` (docs/schematic.md)
+  pybind11-dev python3-dev python3-numpy python3-pytest   # the Python module (docs/python.md)
+  python3-pandas python3-matplotlib                      # its to_pandas() and worked study
 )
 
 missing=()

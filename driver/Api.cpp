@@ -1,0 +1,121 @@
+#include "driver/Api.h"
+
+#include "driver/SceneBuilder.h"
+#include "driver/outputs/AtomicFile.h"
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <unistd.h>
+
+namespace milldyn {
+namespace {
+
+std::string hostName() {
+    char buf[256] = {0};
+    if (::gethostname(buf, sizeof buf - 1) != 0) return "unknown";
+    return buf;
+}
+
+}  // namespace
+
+const char* milldynVersion() { return "0.1.0"; }
+
+ModelSpec readModel(const std::string& path, const std::vector<Override>& overrides) {
+    return readModelFile(path, defaultModelReader(), overrides);
+}
+
+RunOutcome runModel(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
+    RunOutcome run;
+    const auto start = std::chrono::steady_clock::now();
+    run.result = runAnalysis(spec, progress, observer);
+    // What the preset picked, in the printed summary and summary.json.
+    if (!spec.preset.empty()) {
+        std::ostringstream picked;
+        picked << "preset " << spec.preset << ": " << spec.integrator.name << " " << spec.integrator.accuracy;
+        if (spec.integrator.maxStep > 0) picked << ", max_step " << spec.integrator.maxStep << " s";
+        if (!spec.fidelity.empty()) picked << ", fidelity " << spec.fidelity;
+        picked << " (" << spec.presetWhy << ")";
+        run.result.notes.insert(run.result.notes.begin(), picked.str());
+    }
+    run.info.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run.info.host = hostName();
+    run.info.version = milldynVersion();
+    for (const auto& r : run.result.results)
+        if (!std::isfinite(r.value))
+            throw AnalysisError("result " + r.name + " is not finite (the analysis diverged)");
+    return run;
+}
+
+ProgressFn cancellableProgress(CancelFlag& flag, ProgressFn next) {
+    return [&flag, next = std::move(next)](double t, double end) {
+        flag.simulated = t;
+        flag.end = end;
+        if (flag.cancelled) {
+            std::ostringstream s;
+            s << "run cancelled at " << t << " of " << end;
+            throw RunCancelled(s.str());
+        }
+        if (next) next(t, end);
+    };
+}
+
+std::vector<std::string> writeRunFiles(const std::string& dir, const ModelSpec& spec, const RunOutcome& run,
+                                       std::string& warning) {
+    ensureDirectory(dir);
+    return writeResultFiles(dir, spec, run.result, run.info, warning);
+}
+
+ModelInfo describeModel(const ModelSpec& spec) {
+    auto scene = buildScene(spec);
+    const SimTK::State state = scene->system().getDefaultState();
+    ModelInfo info;
+    info.name = spec.name;
+    info.file = spec.file;
+    info.bodies = static_cast<int>(scene->bodies().size());
+    info.mobilities = state.getNU();
+    info.constraints = scene->matter().getNumConstraints();
+    info.forces = scene->forces().getNumForces();
+    for (const auto& b : spec.bodies) info.bodyList.push_back({b.name, b.joint.parent, b.inertia});
+    for (const auto& e : spec.elements) info.elements.push_back({e.name, e.type});
+    info.scenario = spec.scenario.type;
+    info.integrator = spec.integrator.name;
+    info.accuracy = spec.integrator.accuracy;
+    info.maxStep = spec.integrator.maxStep;
+    info.fidelity = spec.fidelity;
+    info.presets = spec.presetNames;
+    info.preset = spec.preset;
+    info.presetWhy = spec.presetWhy;
+    info.derived = derivedResults(*scene);
+    for (const auto& n : scene->notes()) info.built.push_back({n.what, n.why});
+    info.notBuilt = spec.notBuilt;
+    for (const auto& n : scene->omitted()) info.notBuilt.push_back({n.what, n.why});
+    if (spec.scenario.type == "transient") {
+        const std::string why = whyNoReplay(*scene, initialState(*scene, spec));
+        info.timeIntegration = spec.scenario.text("zero_dof") == "integrate" ? "integrated (zero_dof: integrate)"
+                               : why.empty() ? "none: no free degrees of freedom, the run is replayed at the samples"
+                                             : why;
+    } else if (spec.scenario.type == "coastdown_identify") {
+        info.timeIntegration = "integrated (run-outs after a switch-off)";
+    } else if (spec.scenario.type == "frequency_response") {
+        info.timeIntegration = "only the optional time-domain check of the linear response";
+    } else {
+        info.timeIntegration = "none (" + spec.scenario.type + " analysis)";
+    }
+    for (const auto& p : scene->probes()) info.outputs.push_back({p.name, p.unit});
+    return info;
+}
+
+SweepPlan makeSweepPlan(const std::vector<std::string>& grids, const std::vector<std::string>& ranges,
+                        std::size_t lhs, unsigned long seed) {
+    if (grids.empty() == (lhs == 0))
+        throw std::invalid_argument("sweep needs --grid path=a:b:n ... or --lhs N with --range path=a:b ...");
+    if (lhs > 0 && ranges.empty()) throw std::invalid_argument("--lhs needs at least one --range path=a:b");
+    if (!grids.empty() && !ranges.empty()) throw std::invalid_argument("--range goes with --lhs, not with --grid");
+    std::vector<SweepAxis> axes;
+    for (const auto& g : grids) axes.push_back(parseGrid(g));
+    for (const auto& r : ranges) axes.push_back(parseRange(r));
+    return lhs > 0 ? makeLatinHypercube(axes, lhs, seed) : makeGrid(axes);
+}
+
+}  // namespace milldyn

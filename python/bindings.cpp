@@ -1,0 +1,362 @@
+// The C++ half of the Python module `milldyn` (python/milldyn/__init__.py is
+// the other): thin pybind11 wrappers over driver/Api and the driver's public
+// functions, the same code `milldyn run|info|sweep|validate` calls. Every
+// run releases the GIL; a run on Python's main thread checks for signals
+// (Ctrl-C) at its samples, and any run stops at its next sample when its
+// CancelToken is set. C++ errors become the exceptions of milldyn.errors,
+// carrying the text the CLI prints.
+
+#include "driver/Api.h"
+#include "driver/PluginLoader.h"
+#include "driver/Simulation.h"
+#include "driver/Units.h"
+#include "driver/outputs/AtomicFile.h"
+#include "plugins/scene/ElementRegistry.h"
+#include "validation/cases/ValidationCases.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <memory>
+#include <thread>
+
+namespace py = pybind11;
+using namespace milldyn;
+
+namespace {
+
+/// Raises milldyn.errors.NAME(args...) (called with the GIL held).
+template <class... Args>
+void raise(const char* name, Args&&... args) {
+    py::object cls = py::module_::import("milldyn.errors").attr(name);
+    py::object exc = cls(std::forward<Args>(args)...);
+    PyErr_SetObject(cls.ptr(), exc.ptr());
+}
+
+void translate(std::exception_ptr p) {
+    try {
+        if (p) std::rethrow_exception(p);
+    } catch (const SpecError& e) {
+        raise("ModelError", e.formatted(), e.where().file, e.where().line, e.where().column, e.key(),
+              std::string(e.what()), e.where().includedFrom);
+    } catch (const AnalysisError& e) {
+        raise("AnalysisFailed", std::string("milldyn: analysis failed: ") + e.what(), std::string(e.what()));
+    } catch (const OutputError& e) {
+        raise("OutputFailed", std::string("milldyn: output failed: ") + e.what(), std::string(e.what()));
+    } catch (const RunCancelled& e) {
+        raise("Cancelled", std::string(e.what()));
+    } catch (const units::UnitError& e) {
+        raise("UnitError", std::string(e.what()), static_cast<int>(e.column()));
+    }
+}
+
+struct Token {
+    std::shared_ptr<CancelFlag> flag = std::make_shared<CancelFlag>();
+};
+
+struct SpecHandle {
+    ModelSpec spec;
+};
+
+struct RunHandle {
+    ModelSpec spec;
+    RunOutcome run;
+};
+
+std::vector<Override> toOverrides(const std::vector<std::pair<std::string, std::string>>& pairs) {
+    std::vector<Override> out;
+    for (const auto& [path, value] : pairs) out.push_back({path, value});
+    return out;
+}
+
+py::list columnsOf(const std::vector<std::vector<double>>& rows, std::size_t ncols) {
+    py::list cols;
+    for (std::size_t c = 0; c < ncols; ++c) {
+        py::array_t<double> a(static_cast<py::ssize_t>(rows.size()));
+        auto m = a.mutable_unchecked<1>();
+        for (std::size_t r = 0; r < rows.size(); ++r) m(static_cast<py::ssize_t>(r)) = c < rows[r].size() ? rows[r][c] : 0.0;
+        cols.append(a);
+    }
+    return cols;
+}
+
+py::dict tableDict(const std::string& name, const std::vector<std::string>& names,
+                   const std::vector<std::string>& units, const std::vector<std::vector<double>>& rows) {
+    py::dict d;
+    d["name"] = name;
+    d["names"] = names;
+    d["units"] = units;
+    d["columns"] = columnsOf(rows, names.size());
+    return d;
+}
+
+py::list scalars(const std::vector<ResultScalar>& list) {
+    py::list out;
+    for (const auto& r : list) out.append(py::make_tuple(r.name, r.value, r.unit, r.doc));
+    return out;
+}
+
+const char* kindName(ParamKind k) {
+    switch (k) {
+        case ParamKind::Quantity: return "quantity";
+        case ParamKind::Choice: return "choice";
+        case ParamKind::BodyRef: return "body";
+        case ParamKind::BodyPair: return "body_pair";
+        case ParamKind::BodyList: return "body_list";
+        case ParamKind::QuantityList: return "quantity_list";
+        case ParamKind::Text: return "text";
+    }
+    return "?";
+}
+
+py::dict schemaDict(const ElementSchema& s) {
+    py::dict keys;
+    for (const auto& p : s.params) {
+        py::dict k;
+        k["kind"] = kindName(p.kind);
+        const bool numeric = p.kind == ParamKind::Quantity || p.kind == ParamKind::QuantityList;
+        k["unit"] = numeric ? py::object(py::str(p.unit)) : py::object(py::none());
+        k["required"] = p.required;
+        if (p.defaultValue) k["default"] = *p.defaultValue;
+        else if (!p.required && !numeric) k["default"] = p.defaultText;
+        else k["default"] = py::none();
+        k["choices"] = p.choices;
+        k["min"] = p.min ? py::object(py::float_(*p.min)) : py::object(py::none());
+        k["min_exclusive"] = p.minExclusive;
+        k["max"] = p.max ? py::object(py::float_(*p.max)) : py::object(py::none());
+        k["max_exclusive"] = p.maxExclusive;
+        if (p.kind == ParamKind::BodyList || p.kind == ParamKind::QuantityList) {
+            k["min_count"] = p.minCount;
+            k["max_count"] = p.maxCount;
+        }
+        k["doc"] = p.doc;
+        keys[py::str(p.key)] = k;
+    }
+    py::dict d;
+    d["type"] = s.type;
+    d["doc"] = s.doc;
+    d["output_only"] = s.outputOnly;
+    d["keys"] = keys;
+    return d;
+}
+
+std::unique_ptr<RunHandle> runSpec(const SpecHandle& h, Token* token, bool checkSignals) {
+    auto flag = token ? token->flag : std::make_shared<CancelFlag>();
+    ProgressFn signals;
+    if (checkSignals) {
+        // Ctrl-C on the main thread: Python's handler runs only when the
+        // interpreter does, so look at most every 50 ms of wall time.
+        auto last = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
+        signals = [last](double, double) {
+            const auto now = std::chrono::steady_clock::now();
+            if (now - *last < std::chrono::milliseconds(50)) return;
+            *last = now;
+            py::gil_scoped_acquire gil;
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        };
+    }
+    const ProgressFn progress = cancellableProgress(*flag, signals);
+    auto out = std::make_unique<RunHandle>();
+    out->spec = h.spec;
+    py::gil_scoped_release release;
+    out->run = runModel(out->spec, progress);
+    return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_milldyn, m) {
+    m.doc() = "milldyn's C++ core (use the package milldyn)";
+    py::register_exception_translator(&translate);
+    m.attr("__version__") = milldynVersion();
+
+    py::class_<Token>(m, "CancelToken", "Stops the runs it is given at their next sample, from any thread.")
+        .def(py::init<>())
+        .def("cancel", [](Token& t) { t.flag->cancelled = true; }, "Asks the run to stop.")
+        .def_property_readonly("cancelled", [](const Token& t) { return t.flag->cancelled.load(); })
+        .def_property_readonly("progress", [](const Token& t) {
+            return py::make_tuple(t.flag->simulated.load(), t.flag->end.load());
+        }, "(reached, of): the last progress a run reported (simulated time [s], or steps).");
+
+    py::class_<SpecHandle>(m, "Spec")
+        .def_property_readonly("name", [](const SpecHandle& h) { return h.spec.name; })
+        .def_property_readonly("file", [](const SpecHandle& h) { return h.spec.file; })
+        .def_property_readonly("description", [](const SpecHandle& h) { return h.spec.description; })
+        .def_property_readonly("analysis", [](const SpecHandle& h) { return h.spec.scenario.type; });
+
+    m.def("read_model", [](const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
+        auto h = std::make_unique<SpecHandle>();
+        py::gil_scoped_release release;
+        h->spec = readModel(path, toOverrides(overrides));
+        return h;
+    });
+
+    m.def("describe", [](const SpecHandle& h) {
+        ModelInfo i;
+        {
+            py::gil_scoped_release release;
+            i = describeModel(h.spec);
+        }
+        py::dict d;
+        d["name"] = i.name;
+        d["file"] = i.file;
+        d["bodies"] = i.bodies;
+        d["mobilities"] = i.mobilities;
+        d["constraints"] = i.constraints;
+        d["forces"] = i.forces;
+        py::list bodies;
+        for (const auto& b : i.bodyList) {
+            py::dict bd;
+            bd["name"] = b.name;
+            bd["joint"] = "pin";
+            bd["parent"] = b.parent;
+            bd["inertia"] = py::make_tuple(b.inertia, "kg*m^2");
+            bodies.append(bd);
+        }
+        d["body_list"] = bodies;
+        py::list elements;
+        for (const auto& e : i.elements) elements.append(py::make_tuple(e.name, e.type));
+        d["elements"] = elements;
+        d["scenario"] = i.scenario;
+        d["integrator"] = i.integrator;
+        d["accuracy"] = i.accuracy;
+        d["max_step"] = i.maxStep > 0 ? py::object(py::make_tuple(i.maxStep, "s")) : py::object(py::none());
+        d["fidelity"] = i.fidelity.empty() ? py::object(py::none()) : py::object(py::str(i.fidelity));
+        d["presets"] = i.presets;
+        d["preset"] = i.preset.empty() ? py::object(py::none()) : py::object(py::make_tuple(i.preset, i.presetWhy));
+        d["derived"] = scalars(i.derived);
+        py::list built, notBuilt;
+        for (const auto& n : i.built) built.append(py::make_tuple(n.what, n.why));
+        for (const auto& n : i.notBuilt) notBuilt.append(py::make_tuple(n.what, n.why));
+        d["built"] = built;
+        d["not_built"] = notBuilt;
+        d["time_integration"] = i.timeIntegration;
+        py::list outputs;
+        for (const auto& o : i.outputs) outputs.append(py::make_tuple(o.name, o.unit));
+        d["outputs"] = outputs;
+        return d;
+    });
+
+    m.def("run", &runSpec, py::arg("spec"), py::arg("token") = nullptr, py::arg("check_signals") = false);
+
+    py::class_<RunHandle>(m, "Run")
+        .def_property_readonly("analysis", [](const RunHandle& r) { return r.run.result.analysis; })
+        .def("table", [](const RunHandle& r) {
+            const auto& x = r.run.result;
+            return tableDict(x.tableName, x.columnNames, x.columnUnits, x.rows);
+        })
+        .def("extra_tables", [](const RunHandle& r) {
+            py::list out;
+            for (const auto& t : r.run.result.extraTables)
+                out.append(tableDict(t.name, t.columnNames, t.columnUnits, t.rows));
+            return out;
+        })
+        .def("results", [](const RunHandle& r) { return scalars(r.run.result.results); })
+        .def("derived", [](const RunHandle& r) { return scalars(r.run.result.derived); })
+        .def("notes", [](const RunHandle& r) { return r.run.result.notes; })
+        .def("statistics", [](const RunHandle& r) {
+            const auto& s = r.run.result.statistics;
+            py::dict d;
+            d["integrator"] = s.integrator;
+            d["accuracy"] = s.accuracy;
+            d["steps"] = s.steps;
+            d["realizations"] = s.realizations;
+            d["step_attempts"] = s.stepAttempts;
+            d["consistency_restarts"] = s.consistencyRestarts;
+            d["wall_seconds"] = r.run.info.wallSeconds;
+            d["host"] = r.run.info.host;
+            d["version"] = r.run.info.version;
+            return d;
+        })
+        .def("linear_model", [](const RunHandle& r) {
+            py::dict mats;
+            for (const auto& mtx : r.run.result.matrices) {
+                const std::size_t n = mtx.rows.empty() ? 0 : mtx.rows.front().size();
+                py::array_t<double> a({static_cast<py::ssize_t>(mtx.rows.size()), static_cast<py::ssize_t>(n)});
+                auto w = a.mutable_unchecked<2>();
+                for (std::size_t i = 0; i < mtx.rows.size(); ++i)
+                    for (std::size_t j = 0; j < n; ++j)
+                        w(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(j)) = j < mtx.rows[i].size() ? mtx.rows[i][j] : 0.0;
+                mats[py::str(mtx.name)] = py::make_tuple(a, mtx.unit);
+            }
+            return py::make_tuple(r.run.result.dofNames, mats);
+        })
+        .def("summary_json", [](const RunHandle& r) { return formatSummaryJson(r.spec, r.run.result, r.run.info); })
+        .def("write", [](const RunHandle& r, const std::string& dir) {
+            std::string warning;
+            std::vector<std::string> files;
+            {
+                py::gil_scoped_release release;
+                files = writeRunFiles(dir, r.spec, r.run, warning);
+            }
+            return py::make_tuple(files, warning);
+        });
+
+    m.def("sweep", [](const std::string& model, const std::vector<std::pair<std::string, std::string>>& overrides,
+                      const std::vector<std::string>& grids, const std::vector<std::string>& ranges, std::size_t lhs,
+                      unsigned long seed, unsigned jobs, const std::string& outDir) {
+        SweepSummary s;
+        {
+            py::gil_scoped_release release;
+            const SweepPlan plan = makeSweepPlan(grids, ranges, lhs, seed);
+            SweepOptions options;
+            options.model = model;
+            options.baseOverrides = toOverrides(overrides);
+            readModel(options.model, options.baseOverrides);  // one error, not one per point
+            options.jobs = std::max(1u, jobs);
+            options.outDir = outDir;
+            s = runSweep(plan, options);
+        }
+        py::dict d;
+        d["run"] = s.run;
+        d["resumed"] = s.resumed;
+        d["failed"] = s.failed;
+        d["total"] = s.total;
+        d["files"] = s.files;
+        return d;
+    });
+
+    m.def("validate", [](const std::string& filter) {
+        std::vector<ValidationRow> rows;
+        {
+            py::gil_scoped_release release;
+            rows = runValidationCases(filter);
+        }
+        py::list out;
+        for (const auto& r : rows) {
+            py::dict d;
+            d["case"] = r.caseName;
+            d["quantity"] = r.quantity;
+            d["unit"] = r.unit;
+            d["multibody"] = r.multibody ? py::object(py::float_(*r.multibody)) : py::object(py::none());
+            d["oracle"] = r.oracle;
+            d["paper"] = r.paper ? py::object(py::float_(*r.paper)) : py::object(py::none());
+            d["rel_error"] = r.relError;
+            d["tolerance"] = r.tolerance;
+            d["status"] = r.status;
+            d["note"] = r.note;
+            out.append(d);
+        }
+        return out;
+    });
+
+    m.def("elements", [] {
+        py::list out;
+        const auto& registry = ElementRegistry::instance();
+        for (const auto& name : registry.typeNames()) out.append(schemaDict(registry.find(name)->schema));
+        return out;
+    });
+    m.def("analyses", [] {
+        py::list out;
+        for (const auto& kind : analysisKinds()) out.append(schemaDict(*findAnalysisSchema(kind)));
+        return out;
+    });
+    m.def("load_plugin", [](const std::string& path) { loadPlugin(path); });
+    m.def("to_si", [](const std::string& text, const std::string& unit) { return units::toSI(text, unit); });
+    m.def("parse_quantity", [](const std::string& text) {
+        const units::Quantity q = units::parseQuantity(text);
+        return py::make_tuple(q.value, q.dim.toString());
+    });
+}

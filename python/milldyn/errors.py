@@ -1,0 +1,55 @@
+"""The exceptions milldyn raises; each carries the text the CLI prints."""
+
+
+class MilldynError(Exception):
+    """Base of milldyn's exceptions. ``text`` is what ``milldyn`` prints."""
+
+    def __init__(self, text):
+        super().__init__(text)
+        self.text = text
+
+
+class ModelError(MilldynError, ValueError):
+    """Bad input (CLI exit code 2): a model file, an override, a plugin.
+
+    ``text`` is the CLI's one line ``file:line:col: error: key: reason``;
+    ``file``, ``line``, ``column``, ``key`` and ``reason`` its parts, and
+    ``included_from`` the include chain of a value from a part file.
+    """
+
+    def __init__(self, text, file="", line=0, column=0, key="", reason="", included_from=""):
+        super().__init__(text)
+        self.file, self.line, self.column = file, line, column
+        self.key, self.reason, self.included_from = key, reason, included_from
+
+
+class AnalysisFailed(MilldynError, RuntimeError):
+    """The analysis failed (CLI exit code 1); ``reason`` names the element or
+    quantity and the simulated time."""
+
+    def __init__(self, text, reason=""):
+        super().__init__(text)
+        self.reason = reason
+
+
+class OutputFailed(MilldynError, OSError):
+    """A file could not be written (CLI exit code 1)."""
+
+    def __init__(self, text, reason=""):
+        MilldynError.__init__(self, text)
+        self.reason = reason
+
+    def __str__(self):
+        return self.text
+
+
+class Cancelled(MilldynError):
+    """A run stopped because its CancelToken was set."""
+
+
+class UnitError(MilldynError, ValueError):
+    """A quantity or unit that does not parse (``column``: 0-based offset)."""
+
+    def __init__(self, text, column=0):
+        super().__init__(text)
+        self.column = column
