@@ -5,6 +5,7 @@
 // along the line of action.
 
 #include "plugins/scene/Scene.h"
+#include "plugins/transmissions/GearPair.h"
 
 namespace milldyn {
 
@@ -38,6 +39,9 @@ struct GearMeshParams {
  * mobilizer reaction at B and at the carrier's axis A, as in the paper.
  * Because |λ| is not linear in λ, that holds only because N is workless
  * here; a gear whose radial direction were free would need a contact model.
+ * The mesh geometry (pitch point, line of action, force components) is
+ * GearPair's GearGeometry with the fixed gear as gear 1 (the ring when
+ * internal) and the planet as gear 2, spur (β = 0).
  */
 class GearMesh : public SimTK::Constraint::Custom::Implementation {
 public:
@@ -75,6 +79,7 @@ public:
 
 private:
     GearMeshParams m_p;
+    GearGeometry m_geometry;  // gear 1 the fixed gear, gear 2 the planet
     double m_side;  // −1 external, +1 internal: P = B + side·r·e_out
     SimTK::ConstrainedBodyIndex m_groundBody, m_carrierBody, m_planetBody;
     SimTK::ConstrainedMobilizerIndex m_carrierMob, m_planetMob;
