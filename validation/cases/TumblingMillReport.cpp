@@ -1,0 +1,68 @@
+// The tumbling ball mill's section of the validation report (issue 19):
+// the girth-gear drive's mesh forces and bearing loads against statics, the
+// geared chain's natural frequencies against the ratio²-reduced chain, and
+// the start's energy balance, as tables built from the case rows.
+
+#include "validation/report/ReportSection.h"
+
+#include <string>
+
+namespace milldyn {
+namespace {
+
+std::vector<ReportTable> tables(const std::vector<ValidationRow>& rows) {
+    std::vector<ReportTable> out;
+    for (const std::string variant : {"spur", "helical"}) {
+        ReportTable t;
+        const std::string name = "tumbling_mill_girth_gear_statics_" + variant;
+        t.title = "Girth gear (" + variant + ") at steady running: model vs statics";
+        t.header = {"quantity", "multibody [N]", "oracle [N]", "error", "status"};
+        for (const auto& r : rows) {
+            if (r.caseName != name) continue;
+            t.rows.push_back({r.quantity, r.multibody ? formatCell(*r.multibody, 10) : "", formatCell(r.oracle, 10),
+                              formatCell(r.relError, 2), r.status});
+        }
+        t.caption = "Bearing forces are the forces of the bearings on the shaft, ground axes; errors of the "
+                    "components relative to the shaft's largest load.";
+        if (!t.rows.empty()) out.push_back(t);
+    }
+    ReportTable f;
+    f.title = "Natural frequencies of the geared chain";
+    f.header = {"mode", "linearize [rad/s]", "chain eigen, ratio^2 [rad/s]", "rel. error", "status"};
+    for (const auto& r : rows)
+        if (r.caseName == "tumbling_mill_chain_frequencies")
+            f.rows.push_back({r.quantity, r.multibody ? formatCell(*r.multibody, 10) : "", formatCell(r.oracle, 10),
+                              formatCell(r.relError, 2), r.status});
+    f.caption = "Mesh stiffness along the transverse line of action, on gear 1's shaft k r_b1^2; inertias and "
+                "couplings reduced to the motor shaft by the square of the total ratio.";
+    if (!f.rows.empty()) out.push_back(f);
+    return out;
+}
+
+}  // namespace
+
+ReportSection tumblingMillReportSection() {
+    ReportSection s;
+    s.machine = "tumbling_mill";
+    s.title = "Tumbling ball mill 3 m x 4 m with girth-gear drive (issue 19)";
+    s.paper = "No paper: a user's mill (models/tumbling_ball_mill_3x4m.yaml, numbers argued in docs/own-mill.md).";
+    s.claims = "A gear mesh acts at the pitch point along the line of action, so its tangential, radial "
+               "(W_t tan a_n / cos b) and axial (W_t tan b) forces load both shafts' bearings; two bearings per "
+               "shaft share the load as a beam on two supports; the geared chain vibrates as the chain reduced "
+               "to one shaft with the square of the ratios.";
+    s.oracle = "validation/oracles/GearPairOracle: the helical mesh force triangle (Shigley 13-16), a rigid shaft "
+               "on two simple supports (moments about each support, axial forces' couples at the pitch radius), "
+               "and the generalized eigenproblem of the chain reduced by ratio^2 (Eigen).";
+    s.multibody = "GearPair (compliant mesh) for the reducer stage and the girth gear, TorsionalCoupling for the "
+                  "couplings, ShaftBearings on the shell (trunnions) and the pinion, the model's gravity; steady "
+                  "running by Newton, linearize, a transient start.";
+    s.differences = {
+        "Until the charge laws of issue 19 items 1-2 are merged, the charge is a stand-in load torque "
+        "m g r_c sin(alpha) switched on after the empty start (docs/own-mill.md); the statics cases use it as "
+        "a constant torque and switch the bearing friction off, so the oracle's load is known exactly."};
+    s.docs = "docs/own-mill.md (the model, its numbers, how to run it), validation/cases/TumblingMillCases.cpp.";
+    s.tables = tables;
+    return s;
+}
+
+}  // namespace milldyn
