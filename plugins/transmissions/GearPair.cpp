@@ -290,9 +290,6 @@ void buildGearPair(const ElementSpec& spec, Scene& scene) {
         tangential = [impl](const State& st) { return impl->calcTangentialForce(st); };
         scene.addProbe({spec.name + ".mesh_deflection", "m", ProbeRole::Generic, Stage::Position,
                         [impl](const State& st) { return impl->calcMeshDisplacement(st); }});
-        scene.addSteadyResidual({spec.name + ".mesh_deflection_rate", [g1, g2, r1, r2, s](const State& st) {
-                                     return r1 * pinSpeed(st, g1) + s * r2 * pinSpeed(st, g2);
-                                 }});
         if (p.meshDamping > 0)
             scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
                                  [impl](const State& st) { return impl->calcDampingPower(st); }});
@@ -304,7 +301,17 @@ void buildGearPair(const ElementSpec& spec, Scene& scene) {
         tangential = [impl, matter, index](const State& st) {
             return impl->calcTangentialForce(st, matter->getConstraint(index));
         };
+        // The steady-state search moves angles and speeds freely: hold the
+        // constraint's position level too.
+        scene.addSteadyResidual({spec.name + ".rolling_error", [g1, g2, r1, r2, s](const State& st) {
+                                     return r1 * pinAngle(st, g1) + s * r2 * pinAngle(st, g2);
+                                 }});
     }
+    // Steady running: the mesh's sliding rate along the pitch line is zero
+    // (the rigid law's velocity constraint; the compliant mesh's deflection rate).
+    scene.addSteadyResidual({spec.name + ".mesh_deflection_rate", [g1, g2, r1, r2, s](const State& st) {
+                                 return r1 * pinSpeed(st, g1) + s * r2 * pinSpeed(st, g2);
+                             }});
     const Stage stage = p.law == GearPairLaw::Rigid ? Stage::Acceleration : Stage::Velocity;
     const GearGeometry geo = p.geometry;
     scene.addProbe({spec.name + ".tangential_force", "N", ProbeRole::Generic, stage, tangential});
