@@ -100,6 +100,9 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
         P::choice("operating_point", {"steady", "file"},
                   "steady: solved steady running about the mean load; file: the bodies' initial_* keys")
             .optional("steady"),
+        P::body("reference_shaft", "mode shapes referred to this shaft: amplitudes times the speed ratio to it "
+                                   "(default: each body's own angle)")
+            .optional(""),
     };
     schemas["linearize"] = linearize;
 

@@ -6,6 +6,9 @@
 #include "driver/analyses/LinearModel.h"
 
 #include <cmath>
+#include <map>
+#include <string>
+#include <vector>
 
 namespace milldyn {
 
@@ -41,27 +44,82 @@ void addLinearModelOutputs(const LinearModel& lm, AnalysisResult& result) {
     result.extraTables.push_back(modes);
 }
 
+namespace {
+
+/// Per mobility, the factor that refers its amplitude to `reference`: a body
+/// on a pin on ground turning at u_k in the operating point is scaled by
+/// u_ref/u_k (its speed ratio to the reference shaft: a geared body's angle
+/// seen from that shaft); a body on another body (a charge on its drum, a
+/// drum on its carrier) measures its angle relative to that body and takes
+/// the body's factor; a body standing still in the operating point keeps 1.
+std::vector<double> referralFactors(const Scene& scene, const SimTK::State& state, const SceneBody& reference,
+                                    std::vector<std::string>& unreferred) {
+    std::vector<double> factor(state.getNU(), 1.0);
+    const double uRef = pinSpeed(state, reference.mobod);
+    std::map<SimTK::MobilizedBodyIndex, double> ofBody;
+    // Bodies are added parents first, so a parent's factor is known.
+    for (const SceneBody& b : scene.bodies()) {
+        const SimTK::MobilizedBody parent = b.mobod.getParentMobilizedBody();
+        double f = 1;
+        if (!parent.isGround()) {
+            auto it = ofBody.find(parent.getMobilizedBodyIndex());
+            f = it == ofBody.end() ? 1.0 : it->second;
+        } else {
+            const double u = pinSpeed(state, b.mobod);
+            if (std::abs(u) > 1e-9 * std::abs(uRef) && std::abs(uRef) > 0) f = uRef / u;
+            else if (b.name != reference.name) unreferred.push_back(b.name);
+        }
+        ofBody[b.mobod.getMobilizedBodyIndex()] = f;
+        const int first = b.mobod.getFirstUIndex(state), nu = b.mobod.getNumU(state);
+        for (int i = 0; i < nu; ++i) factor[first + i] = f;
+    }
+    return factor;
+}
+
+}  // namespace
+
 AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
     auto scene = buildScene(spec);
     SimTK::State state = initialState(*scene, spec);
     if (spec.scenario.text("operating_point") == "steady") state = solveSteadyState(*scene, state);
-    const LinearModel lm = linearizeScene(*scene, state);
+    LinearModel lm = linearizeScene(*scene, state);
 
     AnalysisResult result;
     result.derived = derivedResults(*scene);
     result.analysis = "linearize";
-    result.tableName = "mode_shapes";
-    result.plotXLabel = "body index (parents first)";
     const int n = static_cast<int>(lm.M.rows());
-    result.columnNames = {"body_index"};
-    result.columnUnits = {"1"};
-    for (int m = 0; m < n; ++m) {
-        result.columnNames.push_back("mode_" + std::to_string(m + 1));
+    // Mode shapes referred to a shaft the file names (amplitudes of geared
+    // bodies times their speed ratio to it), each scaled to max |entry| = 1.
+    const std::string reference = spec.scenario.text("reference_shaft");
+    if (!reference.empty()) {
+        std::vector<std::string> unreferred;
+        const std::vector<double> f = referralFactors(*scene, state, *scene->findBody(reference), unreferred);
+        for (int m = 0; m < n; ++m) {
+            for (int b = 0; b < n; ++b) lm.modeShapes(b, m) *= f[b];
+            Eigen::Index at = 0;
+            lm.modeShapes.col(m).cwiseAbs().maxCoeff(&at);
+            lm.modeShapes.col(m) /= lm.modeShapes(at, m);
+        }
+        result.notes.push_back("mode shapes referred to " + reference +
+                               " (amplitude × speed ratio to it at the operating point)");
+        for (const auto& b : unreferred)
+            result.notes.push_back("mode shapes: " + b + " stands still at the operating point, amplitude not referred");
+    } else {
+        result.notes.push_back("mode shapes in each body's own angle (scenario.reference_shaft refers them to one shaft)");
+    }
+    // The main table: one row per mode, one column per degree of freedom,
+    // named by its body.
+    result.tableName = "mode_shapes";
+    result.plotXLabel = "mode";
+    result.columnNames = {"mode", "natural_frequency"};
+    result.columnUnits = {"1", "Hz"};
+    for (const auto& name : lm.dofNames) {
+        result.columnNames.push_back(name);
         result.columnUnits.push_back("1");
     }
-    for (int b = 0; b < n; ++b) {
-        std::vector<double> row = {double(b + 1)};
-        for (int m = 0; m < n; ++m) row.push_back(lm.modeShapes(b, m));
+    for (int m = 0; m < n; ++m) {
+        std::vector<double> row = {double(m + 1), lm.naturalFrequencies[m] / (2 * M_PI)};
+        for (int b = 0; b < n; ++b) row.push_back(lm.modeShapes(b, m));
         result.rows.push_back(row);
     }
     addLinearModelOutputs(lm, result);
@@ -70,14 +128,16 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
     // elastic ones.
     const double scale = lm.naturalFrequencies.maxCoeff();
     int elastic = 0;
-    std::vector<std::size_t> shapeColumns;
     for (int m = 0; m < n; ++m) {
         if (lm.naturalFrequencies[m] <= 1e-6 * scale) continue;
         ++elastic;
-        shapeColumns.push_back(m + 1);
+        // The body that moves most in this mode names it.
+        Eigen::Index at = 0;
+        lm.modeShapes.col(m).cwiseAbs().maxCoeff(&at);
         result.results.push_back({"natural_frequency_" + std::to_string(elastic), lm.naturalFrequencies[m], "rad/s",
                                   "undamped elastic mode " + std::to_string(elastic) + " (" +
-                                      std::to_string(lm.naturalFrequencies[m] / (2 * M_PI)) + " Hz)"});
+                                      std::to_string(lm.naturalFrequencies[m] / (2 * M_PI)) + " Hz), largest at " +
+                                      lm.dofNames[at]});
     }
     for (Eigen::Index i = 0; i < lm.eigenvalues.size(); ++i) {
         const auto l = lm.eigenvalues[i];
@@ -87,7 +147,17 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
         if (l.imag() > 0) result.results.push_back({tag + "_imag", l.imag(), "rad/s", "damped eigenvalue, imaginary part"});
     }
     result.results.push_back({"degrees_of_freedom", double(n), "1", "mobilities of the linearized system"});
-    result.plots.push_back({"mode_shapes", shapeColumns});
+    // The operating point: every body's speed, and the probes that describe
+    // a loaded running point (charge lags, load torques).
+    for (const auto& b : scene->bodies())
+        result.results.push_back({"operating_point." + b.name + ".speed", pinSpeed(state, b.mobod), "rad/s",
+                                  "speed about its joint at the operating point"});
+    scene->system().realize(state, SimTK::Stage::Acceleration);
+    for (const auto& p : scene->probes()) {
+        const bool lag = p.name.size() > 4 && p.name.compare(p.name.size() - 4, 4, ".lag") == 0;
+        if (lag || p.role == ProbeRole::ResistanceTorque || p.role == ProbeRole::DriveTorque)
+            result.results.push_back({"operating_point." + p.name, p.value(state), p.unit, "at the operating point"});
+    }
     result.notes.push_back("operating point: " + spec.scenario.text("operating_point") + ", speed of " +
                            scene->bodies().front().name + " " +
                            std::to_string(pinSpeed(state, scene->bodies().front().mobod)) + " rad/s");

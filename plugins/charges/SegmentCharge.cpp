@@ -4,9 +4,13 @@
 
 #include "plugins/scene/ElementRegistry.h"
 
+#include <algorithm>
+#include <map>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace milldyn {
 
@@ -21,6 +25,9 @@ double absoluteAngle(const State& s, const MobilizedBody& b) {
     const Vec3 x = b.getBodyRotation(s).x();
     return std::atan2(x[1], x[0]);
 }
+
+/// An angle wrapped into (−π, π].
+double wrapAngle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 }  // namespace
 
 SegmentCharge::SegmentCharge(const SimbodyMatterSubsystem& matter, const MobilizedBody& carrier,
@@ -32,6 +39,14 @@ SegmentCharge::SegmentCharge(const SimbodyMatterSubsystem& matter, const Mobiliz
     if (!(p.bulkDensity > 0) || !std::isfinite(p.bulkDensity)) bad("bulk_density must be finite and > 0 kg/m^3");
     if (!(p.halfAngle > 0 && p.halfAngle <= M_PI)) bad("the segment half-angle must be in (0, 180] deg");
     if (!(p.wallDrag >= 0) || !std::isfinite(p.wallDrag)) bad("wall_drag must be finite and >= 0 N*m*s/rad");
+    if (p.lagTableSpeed.size() != p.lagTableLag.size())
+        bad("lag_table_speed and lag_table_lag must have as many entries");
+    for (std::size_t i = 1; i < p.lagTableSpeed.size(); ++i)
+        if (!(p.lagTableSpeed[i] > p.lagTableSpeed[i - 1])) bad("lag_table_speed must increase strictly");
+    if (p.motion == ChargeMotionMode::TorqueArm) {
+        if (!(p.gravity.norm() > 0)) bad("motion: torque_arm needs gravity (the charge's weight is its load)");
+        if (!(p.smoothingSpeed > 0) || !std::isfinite(p.smoothingSpeed)) bad("smoothing_speed must be > 0 rad/s");
+    }
 }
 
 double SegmentCharge::calcFillFraction(double g) { return (2 * g - std::sin(2 * g)) / (2 * M_PI); }
@@ -64,6 +79,53 @@ double SegmentCharge::calcAxisInertia() const {
     return calcMass() * r * r * (12 * g - 4 * std::sin(2 * g) - std::sin(4 * g)) / (12 * (2 * g - std::sin(2 * g)));
 }
 
+double SegmentCharge::calcCriticalSpeed() const { return std::sqrt(m_p.gravity.norm() / m_p.drumRadius); }
+
+double SegmentCharge::calcLagAtSpeedFraction(double phi) const {
+    const std::vector<double>& x = m_p.lagTableSpeed;
+    const std::vector<double>& y = m_p.lagTableLag;
+    const std::size_t n = x.size();
+    if (n == 0) return m_p.lag;
+    if (n == 1 || phi <= x.front()) return y.front();
+    if (phi >= x.back()) return y.back();
+    // Monotone cubic Hermite (Fritsch & Carlson 1980): secant slopes d_k,
+    // end slopes one-sided, interior slopes the harmonic mean of the
+    // neighbouring secants (0 where they differ in sign): C¹, no overshoot.
+    std::vector<double> d(n - 1), m(n);
+    for (std::size_t k = 0; k + 1 < n; ++k) d[k] = (y[k + 1] - y[k]) / (x[k + 1] - x[k]);
+    m[0] = d[0];
+    m[n - 1] = d[n - 2];
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+        if (d[k - 1] * d[k] <= 0) {
+            m[k] = 0;
+            continue;
+        }
+        const double h0 = x[k] - x[k - 1], h1 = x[k + 1] - x[k];
+        const double w1 = 2 * h1 + h0, w2 = h1 + 2 * h0;
+        m[k] = (w1 + w2) / (w1 / d[k - 1] + w2 / d[k]);
+    }
+    const std::size_t k = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), phi) - x.begin()) - 1;
+    const double h = x[k + 1] - x[k], t = (phi - x[k]) / h;
+    const double h00 = (1 + 2 * t) * (1 - t) * (1 - t), h10 = t * (1 - t) * (1 - t);
+    const double h01 = t * t * (3 - 2 * t), h11 = t * t * (t - 1);
+    return h00 * y[k] + h10 * h * m[k] + h01 * y[k + 1] + h11 * h * m[k + 1];
+}
+
+double SegmentCharge::calcTorqueArmLag(double omega) const {
+    return calcLagAtSpeedFraction(std::abs(omega) / calcCriticalSpeed()) * std::tanh(omega / m_p.smoothingSpeed);
+}
+
+double SegmentCharge::calcTorqueArmTorque(double omega) const {
+    // The weight m g at the centroid r_c u, u at α from the downward
+    // vertical d: the z component of (r_c u) × (m g) is
+    // m r_c |g| (cos(d + α) sin d − sin(d + α) cos d) = −m r_c |g| sin α,
+    // |g| the gravity in the plane of the cross-section.
+    const double gPlane = std::hypot(m_p.gravity[0], m_p.gravity[1]);
+    return -calcMass() * calcCentroidDistance() * gPlane * std::sin(calcTorqueArmLag(omega));
+}
+
+double SegmentCharge::calcDrumSpeed(const State& s) const { return m_drum.getBodyAngularVelocity(s)[2]; }
+
 void SegmentCharge::realizeTopology(State& s) const {
     m_heldTorque = m_matter.allocateDiscreteVariable(s, Stage::Dynamics, new Value<Real>(0.0));
 }
@@ -81,19 +143,28 @@ double SegmentCharge::calcDirection(const State& s) const {
     // in by the builder): its centroid is at initial_direction in the drum
     // frame.
     if (m_p.motion == ChargeMotionMode::WithDrum) return absoluteAngle(s, m_drum) + m_p.initialDirection;
+    if (m_p.motion == ChargeMotionMode::TorqueArm) return calcDirectionOfLag(s, calcTorqueArmLag(calcDrumSpeed(s)));
     // The body's mass centre lies on its −y axis.
     const Vec3 down = -m_charge.getBodyRotation(s).y();
     return std::atan2(down[1], down[0]);
 }
 
 double SegmentCharge::calcDirectionOfLag(const State& s, double lag) const {
+    if (m_p.lagFrom == LagReference::Vertical) return calcDownAngle() + lag;
     Vec3 out = m_drum.getBodyOriginLocation(s) - m_carrier.getBodyOriginLocation(s);
     const double outAngle = std::atan2(out[1], out[0]);
     // u = sin α e_out + cos α e_t: at angle outAngle + atan2(cos α, sin α).
     return outAngle + std::atan2(std::cos(lag), std::sin(lag));
 }
 
+double SegmentCharge::calcDownAngle() const {
+    const Vec3& g = m_p.gravity;
+    return g[0] == 0 && g[1] == 0 ? -M_PI / 2 : std::atan2(g[1], g[0]);
+}
+
 double SegmentCharge::calcLag(const State& s) const {
+    if (m_p.motion == ChargeMotionMode::TorqueArm) return calcTorqueArmLag(calcDrumSpeed(s));
+    if (m_p.lagFrom == LagReference::Vertical) return wrapAngle(calcDirection(s) - calcDownAngle());
     Vec3 out = m_drum.getBodyOriginLocation(s) - m_carrier.getBodyOriginLocation(s);
     out[2] = 0;
     out = out / out.norm();
@@ -110,6 +181,7 @@ double SegmentCharge::calcRelativeAngleFor(const State& s, double direction) con
 
 double SegmentCharge::calcSlipSpeed(const State& s) const {
     if (m_p.motion == ChargeMotionMode::WithDrum) return 0;
+    if (m_p.motion == ChargeMotionMode::TorqueArm) return calcDrumSpeed(s);  // the charge stands still
     return -m_charge.getOneU(s, kU);  // the charge's pin is on the drum
 }
 
@@ -118,12 +190,20 @@ double SegmentCharge::calcWallTorque(const State& s) const {
         case ChargeMotionMode::WithDrum: return 0;
         case ChargeMotionMode::Held: return getHeldTorque(s);
         case ChargeMotionMode::DynamicLag: return m_p.wallDrag * calcSlipSpeed(s);
+        case ChargeMotionMode::TorqueArm: return -calcTorqueArmTorque(calcDrumSpeed(s));
     }
     return 0;
 }
 
-void SegmentCharge::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3>&, Vector& mobilityForces) const {
+void SegmentCharge::calcForce(const State& s, Vector_<SpatialVec>& bodyForces, Vector_<Vec3>&,
+                              Vector& mobilityForces) const {
     if (m_p.motion == ChargeMotionMode::WithDrum) return;
+    if (m_p.motion == ChargeMotionMode::TorqueArm) {
+        // The couple that moves the weight's line of action from the axis
+        // (where the shell's mass properties carry it) to the centroid.
+        m_drum.applyBodyTorque(s, Vec3(0, 0, calcTorqueArmTorque(calcDrumSpeed(s))), bodyForces);
+        return;
+    }
     // A mobility force on the charge's pin: drum on charge, and the opposite
     // on the drum.
     m_charge.applyOneMobilityForce(s, kU, calcWallTorque(s), mobilityForces);
@@ -131,11 +211,52 @@ void SegmentCharge::calcForce(const State& s, Vector_<SpatialVec>&, Vector_<Vec3
 
 namespace {
 
+/// The keys each motion uses besides the segment's (drum, drum_radius,
+/// length, bulk_density, fill, half_angle, motion, lag_from).
+const std::map<std::string, std::set<std::string>>& keysOfMotion() {
+    static const std::map<std::string, std::set<std::string>> keys = {
+        {"with_drum", {"initial_direction"}},
+        {"held", {"lag"}},
+        {"dynamic_lag", {"wall_drag", "initial_direction", "initial_lag"}},
+        {"torque_arm", {"lag", "lag_table_speed", "lag_table_lag", "smoothing_speed"}},
+    };
+    return keys;
+}
+
+ChargeMotionMode motionOf(const std::string& word) {
+    if (word == "held") return ChargeMotionMode::Held;
+    if (word == "dynamic_lag") return ChargeMotionMode::DynamicLag;
+    if (word == "torque_arm") return ChargeMotionMode::TorqueArm;
+    return ChargeMotionMode::WithDrum;
+}
+
+/// The gravity of the scene's UniformGravity (zero if none).
+Vec3 sceneGravity(Scene& scene) {
+    const GeneralForceSubsystem& forces = scene.forces();
+    for (int i = 0; i < forces.getNumForces(); ++i) {
+        const Force& f = forces.getForce(ForceIndex(i));
+        if (Force::UniformGravity::isInstanceOf(f)) return Force::UniformGravity::downcast(f).getGravity();
+    }
+    return Vec3(0);
+}
+
+/// Adds mass m with its centre at `comInDrum` and central polar inertia
+/// `centralPolar` (about z) to the drum's mass properties.
+void addToDrum(MobilizedBody& drumBody, double m, const Vec3& comInDrum, double centralPolar) {
+    const Inertia central(centralPolar / 2, centralPolar / 2, centralPolar);
+    const MassProperties d = drumBody.getDefaultMassProperties();
+    const double total = d.getMass() + m;
+    const Inertia aboutOrigin = d.getInertia() + central + Inertia(comInDrum, m);
+    drumBody.setDefaultMassProperties(
+        MassProperties(total, (d.getMass() * d.getMassCenter() + m * comInDrum) / total, aboutOrigin));
+}
+
 void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     // Copies, not a pointer into the scene's body list: adding the charge's
     // body below may move that list.
     const SceneBody drum = *scene.findBody(spec.text("drum"));
     const MobilizedBody carrier = drum.mobod.getParentMobilizedBody();
+    const bool fixedAxis = carrier.isGround();
     SegmentChargeParams p;
     p.drumRadius = spec.number("drum_radius");
     p.length = spec.number("length");
@@ -144,19 +265,38 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                       ? spec.number("half_angle")
                       : SegmentCharge::calcHalfAngleForFill(spec.number("fill"));
     const std::string& motion = spec.text("motion");
-    p.motion = motion == "with_drum" ? ChargeMotionMode::WithDrum
-               : motion == "held"    ? ChargeMotionMode::Held
-                                     : ChargeMotionMode::DynamicLag;
+    p.motion = motionOf(motion);
+    // lag_from: auto is the vertical on a fixed axis (tumbling mill), the
+    // carrier radius on a carried one (planetary: the papers' α).
+    const std::string& lagFrom = spec.text("lag_from");
+    p.lagFrom = lagFrom == "vertical"         ? LagReference::Vertical
+                : lagFrom == "carrier_radius" ? LagReference::CarrierRadius
+                : fixedAxis                   ? LagReference::Vertical
+                                              : LagReference::CarrierRadius;
+    if (p.lagFrom == LagReference::CarrierRadius && fixedAxis)
+        throw spec.error("lag_from", "carrier_radius is measured from the line carrier axis -> drum axis, and drum '" +
+                                         drum.name + "' turns on a pin on ground (no carrier): use lag_from: vertical");
+    if (p.motion == ChargeMotionMode::TorqueArm && p.lagFrom != LagReference::Vertical)
+        throw spec.error("lag_from", "motion: torque_arm holds the charge at a lag from the vertical (the weight's "
+                                     "torque arm): use lag_from: vertical");
     p.lag = spec.number("lag");
     p.initialDirection = spec.number("initial_direction");
     p.wallDrag = spec.number("wall_drag");
+    p.gravity = sceneGravity(scene);
+    if (spec.params.at("lag_table_speed").given) {
+        p.lagTableSpeed = spec.numbers("lag_table_speed");
+        p.lagTableLag = spec.numbers("lag_table_lag");
+    }
+    if (p.motion == ChargeMotionMode::TorqueArm && !(p.gravity.norm() > 0))
+        throw spec.error("motion", "torque_arm: the charge's weight is its load, and the model has no gravity");
+    const double criticalSpeed = std::sqrt(p.gravity.norm() / p.drumRadius);
+    p.smoothingSpeed = spec.params.at("smoothing_speed").given ? spec.number("smoothing_speed") : 0.02 * criticalSpeed;
+    const bool initialLagGiven = spec.params.at("initial_lag").given;
+    const double initialLag = spec.number("initial_lag");
     auto* impl = new SegmentCharge(scene.matter(), carrier, drum.mobod, p);
 
     const double m = impl->calcMass(), lc = impl->calcCentroidDistance();
     const double centralPolar = impl->calcAxisInertia() - m * lc * lc;
-    // About the mass centre: polar about z (a disc), so the same in any
-    // frame turned about z.
-    const Inertia central(centralPolar / 2, centralPolar / 2, centralPolar);
     MobilizedBody drumBody = drum.mobod;  // handles: a copy is the body
     MobilizedBody chargeBody;
     if (p.motion == ChargeMotionMode::WithDrum) {
@@ -166,20 +306,32 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         // drum's joint are the same; a welded body would cost a body in
         // every realization and carry nothing an output reads (the charge's
         // lag follows from the drum's angle).
-        const Vec3 comInDrum(lc * std::cos(p.initialDirection), lc * std::sin(p.initialDirection), 0);
-        const MassProperties d = drumBody.getDefaultMassProperties();
-        const double total = d.getMass() + m;
-        const Inertia aboutOrigin = d.getInertia() + central + Inertia(comInDrum, m);
-        drumBody.setDefaultMassProperties(
-            MassProperties(total, (d.getMass() * d.getMassCenter() + m * comInDrum) / total, aboutOrigin));
+        addToDrum(drumBody, m, Vec3(lc * std::cos(p.initialDirection), lc * std::sin(p.initialDirection), 0),
+                  centralPolar);
+    } else if (p.motion == ChargeMotionMode::TorqueArm) {
+        // Mass and axis inertia on the shell's axis; the couple in calcForce
+        // moves the weight to the centroid.
+        addToDrum(drumBody, m, Vec3(0), impl->calcAxisInertia());
     } else {
         // The body's mass centre lies on its −y axis.
         const Vec3 com(0, -lc, 0);
+        const Inertia central(centralPolar / 2, centralPolar / 2, centralPolar);
         const Body::Rigid body(MassProperties(m, com, central + Inertia(com, m)));
         chargeBody = MobilizedBody::Pin(drumBody, Transform(), body, Transform());
         impl->setBody(chargeBody);
         // Scene bodies are pins (analyses read one angle and speed from each).
         scene.addBody(spec.name, chargeBody);
+        // In steady running on a fixed axis the charge stands at its lag:
+        // relative to the drum it turns back at the drum's speed.
+        if (fixedAxis) scene.addSpeedRelation(spec.name, drum.name, -1.0);
+        if (p.motion == ChargeMotionMode::DynamicLag) {
+            // Steady running: the charge stands still in the carrier frame
+            // (at its running lag), it does not merely stop accelerating.
+            const MobilizedBody cb = chargeBody, c = carrier;
+            scene.addSteadyResidual({spec.name + ".speed_in_carrier_frame", [cb, c](const State& s) {
+                                         return cb.getBodyAngularVelocity(s)[2] - c.getBodyAngularVelocity(s)[2];
+                                     }});
+        }
     }
     // Schematic: the drum wall and the charge's segment where it is now.
     const MobilizedBody drumMobod = drum.mobod;
@@ -195,14 +347,16 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
 
-    if (p.motion != ChargeMotionMode::WithDrum) {
+    if (p.motion == ChargeMotionMode::Held || p.motion == ChargeMotionMode::DynamicLag) {
         const MobilizedBody cb = chargeBody, d = drum.mobod;
         const bool held = p.motion == ChargeMotionMode::Held;
         const System* system = &scene.system();
-        scene.addInitializer([impl, cb, d, held, system](State& s) {
+        scene.addInitializer([impl, cb, d, held, system, initialLagGiven, initialLag](State& s) {
             const SegmentChargeParams& q = impl->params();
             system->realize(s, Stage::Position);
-            const double direction = held ? impl->calcDirectionOfLag(s, q.lag) : q.initialDirection;
+            const double direction = held              ? impl->calcDirectionOfLag(s, q.lag)
+                                     : initialLagGiven ? impl->calcDirectionOfLag(s, initialLag)
+                                                       : q.initialDirection;
             cb.setOneQ(s, kQ, impl->calcRelativeAngleFor(s, direction));
             // Held: still in the carrier frame; dynamic: starts with the drum.
             cb.setOneU(s, kU, held ? -d.getOneU(s, kU) : 0.0);
@@ -218,8 +372,13 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     }
     scene.addProbe({spec.name + ".lag", "rad", ProbeRole::Generic, Stage::Position,
                     [impl](const State& s) { return impl->calcLag(s); }});
-    scene.addProbe({spec.name + ".wall_torque", "N*m", ProbeRole::Generic, Stage::Velocity,
-                    [impl](const State& s) { return impl->calcWallTorque(s); }});
+    if (p.motion == ChargeMotionMode::TorqueArm) {
+        scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, Stage::Velocity,
+                        [impl](const State& s) { return impl->calcWallTorque(s); }});
+    } else {
+        scene.addProbe({spec.name + ".wall_torque", "N*m", ProbeRole::Generic, Stage::Velocity,
+                        [impl](const State& s) { return impl->calcWallTorque(s); }});
+    }
     if (p.motion != ChargeMotionMode::WithDrum) {
         scene.addProbe({spec.name + ".grinding_power", "W", ProbeRole::ResistancePower, Stage::Velocity,
                         [impl](const State& s) { return impl->calcWallTorque(s) * impl->calcSlipSpeed(s); }});
@@ -227,13 +386,33 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                                  return impl->calcWallTorque(s) * impl->calcSlipSpeed(s);
                              }});
     }
+    const std::string where = " (" + spec.name + ", SegmentCharge)";
+    scene.addDerivedValue({spec.name + ".mass", m, "kg", "m_z = ρ l r² (2γ − sin 2γ)/2 (seed 000 eq 3)" + where});
+    scene.addDerivedValue({spec.name + ".centroid_radius", lc, "m",
+                           "l_c = 4 r sin³γ / (3 (2γ − sin 2γ)), centroid from the drum axis (seed 000 eq 6)"});
+    scene.addDerivedValue({spec.name + ".half_angle", p.halfAngle, "rad", "γ, the segment's half-angle"});
+    scene.addDerivedValue({spec.name + ".fill", SegmentCharge::calcFillFraction(p.halfAngle), "1",
+                           "(2γ − sin 2γ)/(2π), filled fraction of the cross-section"});
+    scene.addDerivedValue({spec.name + ".axis_inertia", impl->calcAxisInertia(), "kg*m^2",
+                           "J_Bz about the drum axis (seed 000 eq 13)"});
+    if (p.gravity.norm() > 0)
+        scene.addDerivedValue({spec.name + ".critical_speed", criticalSpeed, "rad/s",
+                               "ω_c = sqrt(|g|/r) = sqrt(2|g|/D): a particle at the wall is held at the top "
+                               "(ball radius neglected)"});
+    const char* convention = p.lagFrom == LagReference::Vertical ? "from the downward vertical, + in the +z sense"
+                                                                 : "from the carrier radius (seed 000 eq 22)";
     scene.note(p.motion == ChargeMotionMode::WithDrum
                    ? "charge " + spec.name + " (SegmentCharge, with_drum) folded into " + drum.name
+               : p.motion == ChargeMotionMode::TorqueArm
+                   ? "charge " + spec.name + " (SegmentCharge, torque_arm) on " + drum.name + ", no body"
                    : "body " + spec.name + " (SegmentCharge, " + motion + ")",
                "charge of " + drum.name + ": " + std::to_string(m) + " kg, centroid " + std::to_string(lc) +
-                   " m from the axis, half-angle " + std::to_string(p.halfAngle * 180 / M_PI) + " deg" +
+                   " m from the axis, half-angle " + std::to_string(p.halfAngle * 180 / M_PI) + " deg, lag " +
+                   convention +
                    (p.motion == ChargeMotionMode::WithDrum
                         ? "; turns with its drum, so its mass is the drum's (no body of its own)"
+                    : p.motion == ChargeMotionMode::TorqueArm
+                        ? "; mass and axis inertia added to the shell, weight's moment m g r_c sin(lag) as a couple"
                         : ""));
 }
 
@@ -243,23 +422,64 @@ void registerSegmentCharge(ElementRegistry& registry) {
     using P = ParamSchema;
     ElementSchema s;
     s.type = "SegmentCharge";
-    s.doc = "Grinding charge as a circular-segment body in a drum (rigid with it, held at a lag, or dragged).";
+    s.doc = "Grinding charge as a circular segment in a drum (rigid with it, held at a lag, dragged, or a torque arm).";
     s.params = {
-        P::body("drum", "drum (on a pin on its carrier) holding the charge"),
+        P::body("drum", "drum (on a pin on its carrier, or on ground) holding the charge"),
         P::quantity("drum_radius", "m", "r: inner radius of the drum").above(0),
         P::quantity("length", "m", "l: inner length of the drum").above(0),
         P::quantity("bulk_density", "kg/m^3", "ρ: bulk density of balls, material and voids").above(0),
         P::quantity("fill", "1", "fill fraction of the cross-section (50 % = half disc)").optional(0.5).above(0).atMost(1),
         P::quantity("half_angle", "rad", "γ: segment half-angle (overrides fill)").optional(M_PI / 2).above(0).atMost(M_PI),
-        P::choice("motion", {"with_drum", "held", "dynamic_lag"}, "how the charge moves").optional(
-            std::string("with_drum")),
-        P::quantity("lag", "rad", "α held in the carrier frame (motion: held)").optional(0.0).atLeast(-M_PI).atMost(M_PI),
+        P::choice("motion", {"with_drum", "held", "dynamic_lag", "torque_arm"}, "how the charge moves")
+            .optional(std::string("with_drum")),
+        P::choice("lag_from", {"auto", "vertical", "carrier_radius"},
+                  "what the lag is measured from (auto: vertical on a fixed axis, carrier_radius on a carrier)")
+            .optional(std::string("auto")),
+        P::quantity("lag", "rad", "α held (motion: held, torque_arm)").optional(0.0).atLeast(-M_PI).atMost(M_PI),
+        P::quantityList("lag_table_speed", "1", 2, 100, "torque_arm: fractions of critical speed, increasing")
+            .optional(0.0).atLeast(0),
+        P::quantityList("lag_table_lag", "rad", 2, 100, "torque_arm: lag at each lag_table_speed")
+            .optional(0.0).atLeast(-M_PI).atMost(M_PI),
+        P::quantity("smoothing_speed", "rad/s", "torque_arm: ω_ε of lag·tanh(ω/ω_ε) (default 2 % of ω_c)")
+            .optional(0.0).above(0),
         P::quantity("initial_direction", "rad", "direction of B→c from +x at t = 0").optional(-M_PI / 2),
+        P::quantity("initial_lag", "rad", "dynamic_lag: lag at t = 0, in the lag_from convention")
+            .optional(0.0).atLeast(-M_PI).atMost(M_PI),
         P::quantity("wall_drag", "N*m*s/rad", "c_w of the wall drag (motion: dynamic_lag)").optional(0.0).atLeast(0),
     };
     s.crossCheck = [](const ElementSpec& e) {
-        if (e.text("motion") == "dynamic_lag" && !(e.number("wall_drag") > 0))
+        const std::string& motion = e.text("motion");
+        const std::set<std::string>& own = keysOfMotion().at(motion);
+        for (const auto& [key, value] : e.params) {
+            if (!value.given || !keysOfMotion().count(motion)) continue;
+            bool usedElsewhere = false;
+            for (const auto& [other, keys] : keysOfMotion()) usedElsewhere = usedElsewhere || keys.count(key);
+            if (usedElsewhere && !own.count(key))
+                throw e.error(key, "not used with motion: " + motion + " (it takes " +
+                                       [&] {
+                                           std::string list;
+                                           for (const auto& k : own) list += (list.empty() ? "" : ", ") + k;
+                                           return list;
+                                       }() +
+                                       ")");
+        }
+        if (motion == "dynamic_lag" && !(e.number("wall_drag") > 0))
             throw e.error("wall_drag", "motion: dynamic_lag needs a wall_drag > 0 N*m*s/rad");
+        if (e.params.at("initial_lag").given && e.params.at("initial_direction").given)
+            throw e.error("initial_lag", "give initial_lag or initial_direction, not both");
+        const bool speeds = e.params.at("lag_table_speed").given, lags = e.params.at("lag_table_lag").given;
+        if (speeds != lags)
+            throw e.error(speeds ? "lag_table_speed" : "lag_table_lag",
+                          "lag_table_speed and lag_table_lag go together");
+        if (speeds) {
+            if (e.params.at("lag").given) throw e.error("lag", "give lag or the lag table, not both");
+            const auto& x = e.numbers("lag_table_speed");
+            if (x.size() != e.numbers("lag_table_lag").size())
+                throw e.error("lag_table_lag", "needs as many entries as lag_table_speed (" +
+                                                   std::to_string(x.size()) + ")");
+            for (std::size_t i = 1; i < x.size(); ++i)
+                if (!(x[i] > x[i - 1])) throw e.error("lag_table_speed", "must increase strictly");
+        }
     };
     registry.add({std::move(s), buildSegmentCharge});
 }

@@ -4,6 +4,8 @@
 
 #include "plugins/scene/Scene.h"
 
+#include <vector>
+
 namespace milldyn {
 
 /// How the charge moves relative to its drum.
@@ -12,6 +14,15 @@ enum class ChargeMotionMode {
     Held,        ///< held at the lag α in the carrier frame by a wall torque
                  ///< the kinetostatic analysis solves for (the papers' lag)
     DynamicLag,  ///< on its own pin, dragged by the wall: the lag follows
+    TorqueArm,   ///< no body: held at a lag that is a condition, its weight's
+                 ///< moment m·g·r_c·sin α loads the shell (tumbling mills)
+};
+
+/// What the lag α is measured from.
+enum class LagReference {
+    Vertical,       ///< from the downward vertical (gravity), positive in the
+                    ///< +z sense, the sense of a positive drum speed
+    CarrierRadius,  ///< from the tangent e_t in the carrier frame, u = sin α e_out + cos α e_t (seed 000 eq 22)
 };
 
 struct SegmentChargeParams {
@@ -23,6 +34,14 @@ struct SegmentChargeParams {
     double lag = 0;          ///< α [rad]: held position, u = sin α e_out + cos α e_t
     double initialDirection = -M_PI / 2;  ///< [rad] of B→c from +x at t = 0 (−90°: hanging)
     double wallDrag = 0;     ///< c_w [N*m*s/rad] >= 0: wall drag, DynamicLag
+    LagReference lagFrom = LagReference::CarrierRadius;
+    /// [m/s^2] the gravity the scene applies (the vertical, the torque arm's
+    /// weight and the critical speed); zero when the model has none.
+    SimTK::Vec3 gravity = SimTK::Vec3(0);
+    /// TorqueArm: lag against the fraction of critical speed φ = |ω|/ω_c
+    /// (both empty: the constant `lag`); φ strictly increasing [1], lags [rad].
+    std::vector<double> lagTableSpeed, lagTableLag;
+    double smoothingSpeed = 0;  ///< ω_ε [rad/s] > 0: TorqueArm lag · tanh(ω/ω_ε)
 };
 
 /**
@@ -49,6 +68,34 @@ struct SegmentChargeParams {
  *   T = c_w (ω_drum − ω_charge); gravity and the carrier's centrifugal field
  *   restore it, and the lag settles where cos α = c_w ω_r/(m_z l_c ω1²(R ± r))
  *   without gravity. T·(ω_drum − ω_charge) is the grinding power (a Load).
+ * - TorqueArm (tumbling mills, the torque-arm model of mill power: the
+ *   charge's weight times its centroid's horizontal offset from the axis):
+ *   the charge is no body; it stays at the
+ *   lag α from the downward vertical while the shell turns under it. Its
+ *   mass and its inertia about the axis J_Bz are added to the shell's (the
+ *   charge circulates with the shell, so the motor accelerates it and the
+ *   bearings carry its weight through the shell's pin); its weight's line of
+ *   action, shifted from the axis to the centroid, adds the couple
+ * <pre>
+ *   M = (r_c u(α_ε)) × (m g) · e_z = −m·|g|·r_c·sin α_ε      (gravity −y)
+ *   α_ε = α(φ)·tanh(ω/ω_ε),  φ = |ω|/ω_c,  ω_c = sqrt(|g|/r) = sqrt(2|g|/D)
+ *   P = −M·ω = m·|g|·r_c·sin α_ε·ω                            (grinding power)
+ * </pre>
+ *   ω the shell's absolute speed about z. α(φ) is the constant `lag`, or a
+ *   table of lag against φ interpolated by a monotone cubic (Fritsch–Carlson:
+ *   C¹, no overshoot), constant beyond its ends. The tanh makes the load
+ *   odd and smooth in ω: a start from rest is well posed (zero load at rest,
+ *   96 % of it at ω = 2ω_ε); the breakaway torque of a charge lifted rigidly
+ *   before it slumps is not modelled. ω_c omits the ball radius (the
+ *   sqrt(g/(R − r_ball)) form needs the ball size, which this element does
+ *   not take).
+ *
+ * Lag conventions (docs/charges.md has the picture): `Vertical` measures α
+ * from the downward vertical (the gravity direction in the xy-plane; −y
+ * without gravity), positive in the +z sense (the sense of a positive drum
+ * speed: a drum turning +z lifts its charge to positive α), so a mill gives
+ * the same lag wherever its axis stands; `CarrierRadius` is the papers' α
+ * (seed 000 eq 22), defined only when the drum's axis moves on a carrier.
  */
 class SegmentCharge : public SimTK::Force::Custom::Implementation {
 public:
@@ -65,11 +112,25 @@ public:
     void setBody(const SimTK::MobilizedBody& charge) { m_charge = charge; }
     const SegmentChargeParams& params() const { return m_p; }
 
+    /// Critical speed ω_c = sqrt(|g|/r) [rad/s] (0 without gravity).
+    double calcCriticalSpeed() const;
+    /// Lag α(φ) at the fraction of critical speed φ (TorqueArm) [rad].
+    double calcLagAtSpeedFraction(double phi) const;
+    /// The TorqueArm lag at absolute shell speed ω [rad/s], smoothing included.
+    double calcTorqueArmLag(double omega) const;
+    /// The TorqueArm couple on the shell [N*m] at shell speed ω [rad/s].
+    double calcTorqueArmTorque(double omega) const;
+    /// Absolute speed of the drum about z [rad/s] (Stage::Velocity).
+    double calcDrumSpeed(const SimTK::State& s) const;
+
+    /// Direction of the downward vertical from +x [rad] (gravity's, −90° without).
+    double calcDownAngle() const;
     /// Angle of B→c from the ground's +x [rad], at Stage::Position.
     double calcDirection(const SimTK::State& s) const;
-    /// Lag α in the carrier frame [rad], in (−π, π].
+    /// Lag α in the element's convention [rad], in (−π, π].
     double calcLag(const SimTK::State& s) const;
-    /// Wall torque on the charge (drum on charge) [N*m], at Stage::Velocity.
+    /// Wall torque on the charge (drum on charge) [N*m], at Stage::Velocity;
+    /// TorqueArm: the load torque on the shell, opposite.
     double calcWallTorque(const SimTK::State& s) const;
     /// ω_drum − ω_charge [rad/s].
     double calcSlipSpeed(const SimTK::State& s) const;

@@ -369,12 +369,13 @@ TEST(LinearizeAnalysis, ResultHasTheEigenvalueAndModeTablesAndTheElasticFrequenc
     EXPECT_NEAR(modes->rows[1][1], omega, kLinearRelTol * omega);
     EXPECT_NEAR(modes->rows[1][2], omega / (2 * kPi), kLinearRelTol * omega);
 
-    // The main table: one row per body, one column per mode.
+    // The main table: one row per mode, one column per body, by name.
     EXPECT_EQ(r.tableName, "mode_shapes");
-    EXPECT_EQ(r.columnNames, (std::vector<std::string>{"body_index", "mode_1", "mode_2"}));
+    EXPECT_EQ(r.columnNames, (std::vector<std::string>{"mode", "natural_frequency", "a", "b"}));
     ASSERT_EQ(r.rows.size(), static_cast<std::size_t>(n));
-    EXPECT_NEAR(r.rows[0][2], 1.0, 1e-9);
-    EXPECT_NEAR(r.rows[1][2], -m.Ja / m.Jb, 1e-9);
+    EXPECT_NEAR(r.rows[1][1], omega / (2 * kPi), kLinearRelTol * omega);
+    EXPECT_NEAR(r.rows[1][2], 1.0, 1e-9);
+    EXPECT_NEAR(r.rows[1][3], -m.Ja / m.Jb, 1e-9);
 
     EXPECT_EQ(r.dofNames, (std::vector<std::string>{"a", "b"}));
     for (const char* name : {"M", "C", "K"}) {

@@ -104,15 +104,17 @@ void buildPlanetaryLayout(const ElementSpec& spec, Scene& scene) {
                          {"planet_pitch_radius", num(r, "planet_pitch_radius")},
                          {"rolling", word(spec.text("rolling"), "rolling")},
                          {"pressure_angle", num(spec.number("pressure_angle"), "pressure_angle")}});
-        buildSubElement(spec, scene, "SegmentCharge", prefix + "charge" + K,
-                        {{"drum", word(drum, "drums")},
-                         {"drum_radius", num(spec.number("drum_radius"), "drum_radius")},
-                         {"length", num(spec.number("drum_length"), "drum_length")},
-                         {"bulk_density", num(spec.number("bulk_density"), "bulk_density")},
-                         {"fill", num(spec.number("fill"), "fill")},
-                         {"motion", word(spec.text("charge_motion"), "charge_motion")},
-                         {"lag", num(spec.number("lag"), "lag")},
-                         {"wall_drag", num(spec.number("wall_drag"), "wall_drag")}});
+        // SegmentCharge refuses the keys its motion does not use.
+        std::map<std::string, Given> charge = {
+            {"drum", word(drum, "drums")},
+            {"drum_radius", num(spec.number("drum_radius"), "drum_radius")},
+            {"length", num(spec.number("drum_length"), "drum_length")},
+            {"bulk_density", num(spec.number("bulk_density"), "bulk_density")},
+            {"fill", num(spec.number("fill"), "fill")},
+            {"motion", word(spec.text("charge_motion"), "charge_motion")}};
+        if (spec.text("charge_motion") == "held") charge["lag"] = num(spec.number("lag"), "lag");
+        if (spec.text("charge_motion") == "dynamic_lag") charge["wall_drag"] = num(spec.number("wall_drag"), "wall_drag");
+        buildSubElement(spec, scene, "SegmentCharge", prefix + "charge" + K, charge);
         buildSubElement(spec, scene, "JournalFriction", prefix + "friction_B" + K,
                         {{"body", word(drum, "drums")},
                          {"friction_coefficient", num(spec.number("friction_coefficient"), "friction_coefficient")},
