@@ -57,9 +57,11 @@ ReportSection tumblingMillReportSection() {
                   "couplings, ShaftBearings on the shell (trunnions) and the pinion, the model's gravity; steady "
                   "running by Newton, linearize, a transient start.";
     s.differences = {
-        "Until the charge laws of issue 19 items 1-2 are merged, the charge is a stand-in load torque "
-        "m g r_c sin(alpha) switched on after the empty start (docs/own-mill.md); the statics cases use it as "
-        "a constant torque and switch the bearing friction off, so the oracle's load is known exactly."};
+        "The statics cases hold the torque-arm charge at a constant 40 deg (the shipped model's lag rises "
+        "with speed through a table, which the oracle does not interpolate) and switch the bearing friction "
+        "off, so the oracle's load m g r_c sin(alpha) is known exactly; the charge's weight rests on the shell's "
+        "axis. With friction on, each bearing's friction is a further (small) torque on the shell, checked in "
+        "tests/plugins/GearPairTest.cpp."};
     s.docs = "docs/own-mill.md (the model, its numbers, how to run it), validation/cases/TumblingMillCases.cpp.";
     s.tables = tables;
     return s;

@@ -1,8 +1,5 @@
 #include "validation/oracles/GearPairOracle.h"
 
-#include <Eigen/Dense>
-
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -32,27 +29,6 @@ std::array<double, 4> twoSupportReactions(const std::vector<ShaftLoad>& loads, d
     }
     const double rBx = -momX / span, rBy = -momY / span;
     return {-sumX - rBx, -sumY - rBy, rBx, rBy};
-}
-
-std::vector<double> gearedChainFrequencies(const std::vector<double>& J, const std::vector<double>& n,
-                                           const std::vector<double>& k) {
-    const std::size_t m = J.size();
-    if (m < 2 || n.size() != m || k.size() != m - 1)
-        throw std::invalid_argument("gearedChainFrequencies: m inertias, m ratios, m-1 springs");
-    Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m), K = Eigen::MatrixXd::Zero(m, m);
-    for (std::size_t i = 0; i < m; ++i) M(i, i) = J[i] / (n[i] * n[i]);
-    for (std::size_t i = 0; i + 1 < m; ++i) {
-        const double kr = k[i] / (n[i] * n[i]);
-        K(i, i) += kr;
-        K(i + 1, i + 1) += kr;
-        K(i, i + 1) -= kr;
-        K(i + 1, i) -= kr;
-    }
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
-    std::vector<double> w;
-    for (int i = 0; i < es.eigenvalues().size(); ++i) w.push_back(std::sqrt(std::max(0.0, es.eigenvalues()[i])));
-    std::sort(w.begin(), w.end());
-    return w;
 }
 
 double meshTorsionalStiffness(double k, double r1, double phiN, double psi) {

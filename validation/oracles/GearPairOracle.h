@@ -47,16 +47,9 @@ struct ShaftLoad {
 /// Returns {R_Ax, R_Ay, R_Bx, R_By} [N]: forces the supports exert on the shaft.
 std::array<double, 4> twoSupportReactions(const std::vector<ShaftLoad>& loads, double zA, double zB);
 
-/// A geared torsional chain: shaft i (inertia J_i about its own axis) turns
-/// at ω_i = ω_1 / n_i (n_1 = 1: n_i is the total ratio from shaft 1); a
-/// spring of stiffness k_i (on shaft i's side) joins shaft i and i+1.
-/// Reduced to shaft 1 (kinetic and strain energy kept): J_i' = J_i/n_i²,
-/// k_i' = k_i/n_i². The natural frequencies [rad/s], ascending (the first is
-/// the free rotation, 0), from the generalized eigenproblem K' v = ω² M' v.
-std::vector<double> gearedChainFrequencies(const std::vector<double>& inertias,
-                                           const std::vector<double>& ratiosToFirst,
-                                           const std::vector<double>& stiffnessesOnLeftShaft);
-
+/// (The natural frequencies of a geared chain reduced by ratio² are
+/// TumblingMillOracle's gearedChainFrequencies.)
+///
 /// Torsional stiffness of a gear mesh on gear 1's shaft: a mesh stiffness k
 /// [N/m] along the transverse line of action (the base circle's tangent)
 /// acts at the base radius r_b1 = r1 cos α_t: k_t = k r_b1².
