@@ -330,6 +330,7 @@ void buildGearPair(const ElementSpec& spec, Scene& scene) {
         const double z1 = p.teeth1;
         scene.addProbe({spec.name + ".mesh_frequency", "Hz", ProbeRole::Generic, Stage::Velocity,
                         [z1, g1](const State& st) { return z1 * std::abs(pinSpeed(st, g1)) / (2 * M_PI); }});
+        scene.addOrderExcitation({spec.name + ".mesh_frequency", b1->name, p.teeth1});
         scene.addDerivedValue({spec.name + ".teeth_1", p.teeth1, "1", "z1 (from teeth or 2 r1 cos(beta)/m_n)"});
         scene.addDerivedValue({spec.name + ".teeth_2", p.teeth2, "1", "z2"});
         scene.addDerivedValue({spec.name + ".mesh_events_per_revolution_of_" + b1->name, p.teeth1, "1",

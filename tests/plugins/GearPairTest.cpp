@@ -258,3 +258,27 @@ TEST(ShaftBearings, FrictionPerBearingIsTheJournalLawOfItsLoadAndAddsUp) {
 
 }  // namespace
 }  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+TEST(GearPair, ToothMeshFrequencyMeetsTheMeshModeInTheResonanceMap) {
+    // Pinion J1 = 2, wheel J2 = 50 kg*m^2, r = 0.2/0.8 m, k = 2e8 N/m, α = 20°:
+    // one elastic mode, ω² = k cos²α r1² (1/J1 + (r2/r1)²... referred to the
+    // pinion: J2' = J2 (r1/r2)² = 3.125, k_t = k cos²α r1² = 7.064e6 N*m/rad.
+    std::string text = pair(", law: compliant, mesh_stiffness: 2e8 N/m, teeth: [20, 80]");
+    text = replacedIn(text, "scenario: {analysis: transient, end_time: 1 s}",
+                      "scenario: {analysis: resonance_map, rotor: wheel, speed_min: 1 rad/s, speed_max: 40 rad/s}");
+    const AnalysisResult r = runAnalysis(readText("pair.yaml", text, {}));
+    const double kt = 2e8 * std::pow(std::cos(20 * kDeg) * 0.2, 2);
+    const double w = std::sqrt(kt * (1 / 2.0 + 1 / (50 * 0.0625)));
+    // The mesh frequency is 20 teeth x the pinion's speed = 20 x 4 x the wheel's.
+    EXPECT_NEAR(r.find("mesh.mesh_frequency.per_rotor_speed")->value, 80, 1e-9);
+    EXPECT_NEAR(r.find("mesh.mesh_frequency.meets_mode_1_at_rotor_speed")->value, w / 80, 1e-6 * w / 80);
+    // Without a load and without a rotor the map has nothing to sweep.
+    const std::string none = replacedIn(text, "rotor: wheel, ", "");
+    EXPECT_TRUE(contains(readErrorOf("pair.yaml", none, {}).what(), "rotor body"));
+}
+
+}  // namespace
+}  // namespace milldyn
