@@ -344,6 +344,15 @@ void addDefaultPlots(AnalysisResult& result) {
     }
     result.plots.push_back({"speeds", speeds});
     result.plots.push_back({"torques", torques});
+    // Bearings where they stand (ShaftBearings): each bearing's radial load.
+    std::vector<std::size_t> loads;
+    const std::string suffix = ".radial_load";
+    for (std::size_t i = 1; i < result.columnNames.size(); ++i) {
+        const std::string& n = result.columnNames[i];
+        if (n.size() > suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
+            loads.push_back(i);
+    }
+    if (!loads.empty()) result.plots.push_back({"bearing_loads", loads});
 }
 
 SampleTable::SampleTable(const Scene& scene, AnalysisResult& result) : m_scene(scene), m_result(result) {
