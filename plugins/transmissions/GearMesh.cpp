@@ -12,7 +12,9 @@ using namespace SimTK;
 
 GearMesh::GearMesh(SimbodyMatterSubsystem& matter, const MobilizedBody& carrier, const MobilizedBody& planet,
                    const GearMeshParams& p)
-    : Implementation(matter, 1, 0, 0), m_p(p), m_side(p.internal ? 1.0 : -1.0) {
+    // Rolling on the fixed gear: R q1 + side r q2 = 0 (q1 the carrier's angle).
+    : RollingConstraint(matter, carrier, planet, p.fixedPitchRadius, (p.internal ? 1.0 : -1.0) * p.planetPitchRadius),
+      m_p(p), m_side(p.internal ? 1.0 : -1.0) {
     m_geometry.pitchRadius1 = p.fixedPitchRadius;
     m_geometry.pitchRadius2 = p.planetPitchRadius;
     m_geometry.internal = p.internal;
@@ -31,34 +33,14 @@ GearMesh::GearMesh(SimbodyMatterSubsystem& matter, const MobilizedBody& carrier,
     m_groundBody = addConstrainedBody(matter.getGround());
     m_carrierBody = addConstrainedBody(carrier);
     m_planetBody = addConstrainedBody(planet);
-    m_carrierMob = addConstrainedMobilizer(carrier);
-    m_planetMob = addConstrainedMobilizer(planet);
 }
 
 double GearMesh::calcPlanetAngle(double carrierAngle) const {
-    // combine(q1, q2) = 0
+    // R q1 + side r q2 = 0
     return -m_p.fixedPitchRadius * carrierAngle / (m_side * m_p.planetPitchRadius);
 }
 
 double GearMesh::calcPlanetSpeed(double carrierSpeed) const { return calcPlanetAngle(carrierSpeed); }
-
-void GearMesh::calcPositionErrors(const State& s, const Array_<Transform, ConstrainedBodyIndex>&,
-                                  const Array_<Real, ConstrainedQIndex>& q, Array_<Real>& perr) const {
-    const MobilizerQIndex q0(0);
-    perr[0] = combine(getOneQ(s, q, m_carrierMob, q0), getOneQ(s, q, m_planetMob, q0));
-}
-
-void GearMesh::calcPositionDotErrors(const State& s, const Array_<SpatialVec, ConstrainedBodyIndex>&,
-                                     const Array_<Real, ConstrainedQIndex>& qdot, Array_<Real>& pverr) const {
-    const MobilizerQIndex q0(0);
-    pverr[0] = combine(getOneQDot(s, qdot, m_carrierMob, q0), getOneQDot(s, qdot, m_planetMob, q0));
-}
-
-void GearMesh::calcPositionDotDotErrors(const State& s, const Array_<SpatialVec, ConstrainedBodyIndex>&,
-                                        const Array_<Real, ConstrainedQIndex>& qdotdot, Array_<Real>& paerr) const {
-    const MobilizerQIndex q0(0);
-    paerr[0] = combine(getOneQDotDot(s, qdotdot, m_carrierMob, q0), getOneQDotDot(s, qdotdot, m_planetMob, q0));
-}
 
 void GearMesh::addInPositionConstraintForces(const State& s, const Array_<Real>& multipliers,
                                              Array_<SpatialVec, ConstrainedBodyIndex>& bodyForcesInA,

@@ -154,35 +154,42 @@ Real GearPairForce::calcPotentialEnergy(const State& s) const {
 
 // ----------------------------------------------------------- rigid
 
+RollingConstraint::RollingConstraint(SimbodyMatterSubsystem& matter, const MobilizedBody& first,
+                                     const MobilizedBody& second, double c1, double c2)
+    : Implementation(matter, 1, 0, 0), m_c1(c1), m_c2(c2) {
+    m_mob1 = addConstrainedMobilizer(first);
+    m_mob2 = addConstrainedMobilizer(second);
+}
+
+void RollingConstraint::calcPositionErrors(const State& s, const Array_<Transform, ConstrainedBodyIndex>&,
+                                           const Array_<Real, ConstrainedQIndex>& q, Array_<Real>& perr) const {
+    const MobilizerQIndex q0(0);
+    perr[0] = m_c1 * getOneQ(s, q, m_mob1, q0) + m_c2 * getOneQ(s, q, m_mob2, q0);
+}
+
+void RollingConstraint::calcPositionDotErrors(const State& s, const Array_<SpatialVec, ConstrainedBodyIndex>&,
+                                              const Array_<Real, ConstrainedQIndex>& qdot, Array_<Real>& pverr) const {
+    const MobilizerQIndex q0(0);
+    pverr[0] = m_c1 * getOneQDot(s, qdot, m_mob1, q0) + m_c2 * getOneQDot(s, qdot, m_mob2, q0);
+}
+
+void RollingConstraint::calcPositionDotDotErrors(const State& s, const Array_<SpatialVec, ConstrainedBodyIndex>&,
+                                                 const Array_<Real, ConstrainedQIndex>& qdotdot,
+                                                 Array_<Real>& paerr) const {
+    const MobilizerQIndex q0(0);
+    paerr[0] = m_c1 * getOneQDotDot(s, qdotdot, m_mob1, q0) + m_c2 * getOneQDotDot(s, qdotdot, m_mob2, q0);
+}
+
 GearPairConstraint::GearPairConstraint(SimbodyMatterSubsystem& matter, const MobilizedBody& gear1,
                                        const MobilizedBody& gear2, const GearPairParams& p)
-    : Implementation(matter, 1, 0, 0), m_p(p) {
+    : RollingConstraint(matter, gear1, gear2, p.geometry.pitchRadius1,
+                        p.geometry.getRollingSign() * p.geometry.pitchRadius2),
+      m_p(p) {
     p.geometry.check("GearPair");
     m_z1 = meshPlaneInBody(gear1, p.axialPosition);
     m_z2 = meshPlaneInBody(gear2, p.axialPosition);
     m_body1 = addConstrainedBody(gear1);
     m_body2 = addConstrainedBody(gear2);
-    m_mob1 = addConstrainedMobilizer(gear1);
-    m_mob2 = addConstrainedMobilizer(gear2);
-}
-
-void GearPairConstraint::calcPositionErrors(const State& s, const Array_<Transform, ConstrainedBodyIndex>&,
-                                            const Array_<Real, ConstrainedQIndex>& q, Array_<Real>& perr) const {
-    const MobilizerQIndex q0(0);
-    perr[0] = combine(getOneQ(s, q, m_mob1, q0), getOneQ(s, q, m_mob2, q0));
-}
-
-void GearPairConstraint::calcPositionDotErrors(const State& s, const Array_<SpatialVec, ConstrainedBodyIndex>&,
-                                               const Array_<Real, ConstrainedQIndex>& qdot, Array_<Real>& pverr) const {
-    const MobilizerQIndex q0(0);
-    pverr[0] = combine(getOneQDot(s, qdot, m_mob1, q0), getOneQDot(s, qdot, m_mob2, q0));
-}
-
-void GearPairConstraint::calcPositionDotDotErrors(const State& s, const Array_<SpatialVec, ConstrainedBodyIndex>&,
-                                                  const Array_<Real, ConstrainedQIndex>& qdotdot,
-                                                  Array_<Real>& paerr) const {
-    const MobilizerQIndex q0(0);
-    paerr[0] = combine(getOneQDotDot(s, qdotdot, m_mob1, q0), getOneQDotDot(s, qdotdot, m_mob2, q0));
 }
 
 void GearPairConstraint::addInPositionConstraintForces(const State& s, const Array_<Real>& multipliers,

@@ -119,13 +119,17 @@ private:
     double calcLineOfActionGap(double deltaB) const;  // δ_b beyond the backlash (0 inside it)
 };
 
-class GearPairConstraint : public SimTK::Constraint::Custom::Implementation {
+/**
+ * The rolling condition of a gear mesh whose line of centres is fixed in
+ * the frame the two angles are measured in: c1·q1 + c2·q2 = 0 in two pin
+ * angles (a GearPair's r1 q1 ± r2 q2; a GearMesh's R q_carrier ∓ r q_planet),
+ * at position, velocity and acceleration level. The mesh forces are the
+ * derived class's (addInPositionConstraintForces).
+ */
+class RollingConstraint : public SimTK::Constraint::Custom::Implementation {
 public:
-    GearPairConstraint(SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& gear1,
-                       const SimTK::MobilizedBody& gear2, const GearPairParams& p);
-    Implementation* clone() const override { return new GearPairConstraint(*this); }
-    /// F_t [N] from the multiplier, at Stage::Acceleration.
-    double calcTangentialForce(const SimTK::State& s, const SimTK::Constraint& self) const;
+    RollingConstraint(SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& first,
+                      const SimTK::MobilizedBody& second, double c1, double c2);
 
     void calcPositionErrors(const SimTK::State& s, const SimTK::Array_<SimTK::Transform, SimTK::ConstrainedBodyIndex>&,
                             const SimTK::Array_<SimTK::Real, SimTK::ConstrainedQIndex>& q,
@@ -137,6 +141,20 @@ public:
                                   const SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>&,
                                   const SimTK::Array_<SimTK::Real, SimTK::ConstrainedQIndex>& qdotdot,
                                   SimTK::Array_<SimTK::Real>& paerr) const override;
+
+private:
+    SimTK::ConstrainedMobilizerIndex m_mob1, m_mob2;
+    double m_c1, m_c2;
+};
+
+class GearPairConstraint : public RollingConstraint {
+public:
+    GearPairConstraint(SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& gear1,
+                       const SimTK::MobilizedBody& gear2, const GearPairParams& p);
+    Implementation* clone() const override { return new GearPairConstraint(*this); }
+    /// F_t [N] from the multiplier, at Stage::Acceleration.
+    double calcTangentialForce(const SimTK::State& s, const SimTK::Constraint& self) const;
+
     void addInPositionConstraintForces(const SimTK::State& s, const SimTK::Array_<SimTK::Real>& multipliers,
                                        SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& bodyForcesInA,
                                        SimTK::Array_<SimTK::Real, SimTK::ConstrainedQIndex>& qForces) const override;
@@ -144,11 +162,7 @@ public:
 private:
     GearPairParams m_p;
     SimTK::ConstrainedBodyIndex m_body1, m_body2;
-    SimTK::ConstrainedMobilizerIndex m_mob1, m_mob2;
     double m_z1 = 0, m_z2 = 0;  // the mesh plane in each gear's frame [m]
-    double combine(double v1, double v2) const {
-        return m_p.geometry.pitchRadius1 * v1 + m_p.geometry.getRollingSign() * m_p.geometry.pitchRadius2 * v2;
-    }
 };
 
 }  // namespace milldyn

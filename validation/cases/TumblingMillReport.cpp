@@ -10,6 +10,12 @@
 namespace milldyn {
 namespace {
 
+/// One table row per validation row: quantity, multibody, oracle, error, status.
+std::vector<std::string> cells(const ValidationRow& r) {
+    return {r.quantity, r.multibody ? formatCell(*r.multibody, 10) : "", formatCell(r.oracle, 10),
+            formatCell(r.relError, 2), r.status};
+}
+
 std::vector<ReportTable> tables(const std::vector<ValidationRow>& rows) {
     std::vector<ReportTable> out;
     for (const std::string variant : {"spur", "helical"}) {
@@ -17,11 +23,8 @@ std::vector<ReportTable> tables(const std::vector<ValidationRow>& rows) {
         const std::string name = "tumbling_mill_girth_gear_statics_" + variant;
         t.title = "Girth gear (" + variant + ") at steady running: model vs statics";
         t.header = {"quantity", "multibody [N]", "oracle [N]", "error", "status"};
-        for (const auto& r : rows) {
-            if (r.caseName != name) continue;
-            t.rows.push_back({r.quantity, r.multibody ? formatCell(*r.multibody, 10) : "", formatCell(r.oracle, 10),
-                              formatCell(r.relError, 2), r.status});
-        }
+        for (const auto& r : rows)
+            if (r.caseName == name) t.rows.push_back(cells(r));
         t.caption = "Bearing forces are the forces of the bearings on the shaft, ground axes; errors of the "
                     "components relative to the shaft's largest load.";
         if (!t.rows.empty()) out.push_back(t);
@@ -30,9 +33,7 @@ std::vector<ReportTable> tables(const std::vector<ValidationRow>& rows) {
     f.title = "Natural frequencies of the geared chain";
     f.header = {"mode", "linearize [rad/s]", "chain eigen, ratio^2 [rad/s]", "rel. error", "status"};
     for (const auto& r : rows)
-        if (r.caseName == "tumbling_mill_chain_frequencies")
-            f.rows.push_back({r.quantity, r.multibody ? formatCell(*r.multibody, 10) : "", formatCell(r.oracle, 10),
-                              formatCell(r.relError, 2), r.status});
+        if (r.caseName == "tumbling_mill_chain_frequencies") f.rows.push_back(cells(r));
     f.caption = "Mesh stiffness along the transverse line of action, on gear 1's shaft k r_b1^2; inertias and "
                 "couplings reduced to the motor shaft by the square of the total ratio.";
     if (!f.rows.empty()) out.push_back(f);
