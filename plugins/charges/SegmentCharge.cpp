@@ -223,11 +223,41 @@ const std::map<std::string, std::set<std::string>>& keysOfMotion() {
     return keys;
 }
 
+/// A key the motion does not use is an error naming the motion. Checked
+/// when the element is built, not when the file is read: a model's other
+/// fidelity levels may hold an element of the same name with another
+/// motion, which `--set elements.NAME.KEY` also reaches.
+void checkKeysOfMotion(const ElementSpec& e) {
+    const std::string& motion = e.text("motion");
+    const std::set<std::string>& own = keysOfMotion().at(motion);
+    for (const auto& [key, value] : e.params) {
+        if (!value.given || own.count(key)) continue;
+        bool usedElsewhere = false;
+        for (const auto& [other, keys] : keysOfMotion()) usedElsewhere = usedElsewhere || keys.count(key);
+        if (!usedElsewhere) continue;
+        std::string list;
+        for (const auto& k : own) list += (list.empty() ? "" : ", ") + k;
+        throw e.error(key, "not used with motion: " + motion + " (it takes " + list + ")");
+    }
+}
+
 ChargeMotionMode motionOf(const std::string& word) {
     if (word == "held") return ChargeMotionMode::Held;
     if (word == "dynamic_lag") return ChargeMotionMode::DynamicLag;
     if (word == "torque_arm") return ChargeMotionMode::TorqueArm;
     return ChargeMotionMode::WithDrum;
+}
+
+/// Whether a body's pin axis stays put in ground: it is on ground, or on the
+/// axis of a body whose axis stays put (a shell on a girth-gear body on
+/// ground). A drum off its parent's axis is carried round it.
+bool axisIsFixed(const MobilizedBody& body) {
+    if (body.isGround()) return true;
+    const MobilizedBody parent = body.getParentMobilizedBody();
+    if (parent.isGround()) return true;
+    const Vec3 offset = body.getDefaultInboardFrame().p();
+    if (std::hypot(offset[0], offset[1]) > 0) return false;
+    return axisIsFixed(parent);
 }
 
 /// The gravity of the scene's UniformGravity (zero if none).
@@ -252,11 +282,12 @@ void addToDrum(MobilizedBody& drumBody, double m, const Vec3& comInDrum, double 
 }
 
 void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
+    checkKeysOfMotion(spec);
     // Copies, not a pointer into the scene's body list: adding the charge's
     // body below may move that list.
     const SceneBody drum = *scene.findBody(spec.text("drum"));
     const MobilizedBody carrier = drum.mobod.getParentMobilizedBody();
-    const bool fixedAxis = carrier.isGround();
+    const bool fixedAxis = axisIsFixed(drum.mobod);
     SegmentChargeParams p;
     p.drumRadius = spec.number("drum_radius");
     p.length = spec.number("length");
@@ -275,7 +306,7 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                                               : LagReference::CarrierRadius;
     if (p.lagFrom == LagReference::CarrierRadius && fixedAxis)
         throw spec.error("lag_from", "carrier_radius is measured from the line carrier axis -> drum axis, and drum '" +
-                                         drum.name + "' turns on a pin on ground (no carrier): use lag_from: vertical");
+                                         drum.name + "' turns about a fixed axis (no carrier): use lag_from: vertical");
     if (p.motion == ChargeMotionMode::TorqueArm && p.lagFrom != LagReference::Vertical)
         throw spec.error("lag_from", "motion: torque_arm holds the charge at a lag from the vertical (the weight's "
                                      "torque arm): use lag_from: vertical");
@@ -299,6 +330,9 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     const double centralPolar = impl->calcAxisInertia() - m * lc * lc;
     MobilizedBody drumBody = drum.mobod;  // handles: a copy is the body
     MobilizedBody chargeBody;
+    // The frame a held or steady charge stands still in: ground on a fixed
+    // axis (even a drum on a coaxial body), the carrier on a carried one.
+    const MobilizedBody reference = fixedAxis ? MobilizedBody(scene.matter().getGround()) : carrier;
     if (p.motion == ChargeMotionMode::WithDrum) {
         // Turns with the drum, its centroid at initial_direction in the drum
         // frame: its mass properties are added to the drum's instead of a
@@ -323,11 +357,11 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         scene.addBody(spec.name, chargeBody);
         // In steady running on a fixed axis the charge stands at its lag:
         // relative to the drum it turns back at the drum's speed.
-        if (fixedAxis) scene.addSpeedRelation(spec.name, drum.name, -1.0);
+        if (carrier.isGround()) scene.addSpeedRelation(spec.name, drum.name, -1.0);
         if (p.motion == ChargeMotionMode::DynamicLag) {
             // Steady running: the charge stands still in the carrier frame
             // (at its running lag), it does not merely stop accelerating.
-            const MobilizedBody cb = chargeBody, c = carrier;
+            const MobilizedBody cb = chargeBody, c = reference;
             scene.addSteadyResidual({spec.name + ".speed_in_carrier_frame", [cb, c](const State& s) {
                                          return cb.getBodyAngularVelocity(s)[2] - c.getBodyAngularVelocity(s)[2];
                                      }});
@@ -351,24 +385,28 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         const MobilizedBody cb = chargeBody, d = drum.mobod;
         const bool held = p.motion == ChargeMotionMode::Held;
         const System* system = &scene.system();
-        scene.addInitializer([impl, cb, d, held, system, initialLagGiven, initialLag](State& s) {
+        scene.addInitializer([impl, cb, d, reference, held, system, initialLagGiven, initialLag](State& s) {
             const SegmentChargeParams& q = impl->params();
             system->realize(s, Stage::Position);
             const double direction = held              ? impl->calcDirectionOfLag(s, q.lag)
                                      : initialLagGiven ? impl->calcDirectionOfLag(s, initialLag)
                                                        : q.initialDirection;
             cb.setOneQ(s, kQ, impl->calcRelativeAngleFor(s, direction));
-            // Held: still in the carrier frame; dynamic: starts with the drum.
-            cb.setOneU(s, kU, held ? -d.getOneU(s, kU) : 0.0);
+            // Held: still in its reference frame; dynamic: starts with the drum.
+            system->realize(s, Stage::Velocity);
+            const double still = reference.getBodyAngularVelocity(s)[2] - d.getBodyAngularVelocity(s)[2];
+            cb.setOneU(s, kU, held ? still : 0.0);
         });
     }
     if (p.motion == ChargeMotionMode::Held) {
-        const MobilizedBody cb = chargeBody, d = drum.mobod;
+        const MobilizedBody cb = chargeBody;
         scene.addKinetostaticUnknown(
             {spec.name + ".wall_torque", [impl](State& s, double T) { impl->setHeldTorque(s, T); },
              [impl](const State& s) { return impl->getHeldTorque(s); },
-             // the charge's angular acceleration in the carrier frame
-             [cb, d](const State& s) { return d.getOneUDot(s, kU) + cb.getOneUDot(s, kU); }});
+             // the charge's angular acceleration in its reference frame
+             [cb, reference](const State& s) {
+                 return cb.getBodyAngularAcceleration(s)[2] - reference.getBodyAngularAcceleration(s)[2];
+             }});
     }
     scene.addProbe({spec.name + ".lag", "rad", ProbeRole::Generic, Stage::Position,
                     [impl](const State& s) { return impl->calcLag(s); }});
@@ -386,8 +424,7 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                                  return impl->calcWallTorque(s) * impl->calcSlipSpeed(s);
                              }});
     }
-    const std::string where = " (" + spec.name + ", SegmentCharge)";
-    scene.addDerivedValue({spec.name + ".mass", m, "kg", "m_z = ρ l r² (2γ − sin 2γ)/2 (seed 000 eq 3)" + where});
+    scene.addDerivedValue({spec.name + ".mass", m, "kg", "m_z = ρ l r² (2γ − sin 2γ)/2 (seed 000 eq 3)"});
     scene.addDerivedValue({spec.name + ".centroid_radius", lc, "m",
                            "l_c = 4 r sin³γ / (3 (2γ − sin 2γ)), centroid from the drum axis (seed 000 eq 6)"});
     scene.addDerivedValue({spec.name + ".half_angle", p.halfAngle, "rad", "γ, the segment's half-angle"});
@@ -407,8 +444,8 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                    ? "charge " + spec.name + " (SegmentCharge, torque_arm) on " + drum.name + ", no body"
                    : "body " + spec.name + " (SegmentCharge, " + motion + ")",
                "charge of " + drum.name + ": " + std::to_string(m) + " kg, centroid " + std::to_string(lc) +
-                   " m from the axis, half-angle " + std::to_string(p.halfAngle * 180 / M_PI) + " deg, lag " +
-                   convention +
+                   " m from the axis, half-angle " + std::to_string(p.halfAngle * 180 / M_PI) + " deg" +
+                   (p.motion == ChargeMotionMode::WithDrum ? std::string() : std::string(", lag ") + convention) +
                    (p.motion == ChargeMotionMode::WithDrum
                         ? "; turns with its drum, so its mass is the drum's (no body of its own)"
                     : p.motion == ChargeMotionMode::TorqueArm
@@ -449,20 +486,6 @@ void registerSegmentCharge(ElementRegistry& registry) {
     };
     s.crossCheck = [](const ElementSpec& e) {
         const std::string& motion = e.text("motion");
-        const std::set<std::string>& own = keysOfMotion().at(motion);
-        for (const auto& [key, value] : e.params) {
-            if (!value.given || !keysOfMotion().count(motion)) continue;
-            bool usedElsewhere = false;
-            for (const auto& [other, keys] : keysOfMotion()) usedElsewhere = usedElsewhere || keys.count(key);
-            if (usedElsewhere && !own.count(key))
-                throw e.error(key, "not used with motion: " + motion + " (it takes " +
-                                       [&] {
-                                           std::string list;
-                                           for (const auto& k : own) list += (list.empty() ? "" : ", ") + k;
-                                           return list;
-                                       }() +
-                                       ")");
-        }
         if (motion == "dynamic_lag" && !(e.number("wall_drag") > 0))
             throw e.error("wall_drag", "motion: dynamic_lag needs a wall_drag > 0 N*m*s/rad");
         if (e.params.at("initial_lag").given && e.params.at("initial_direction").given)

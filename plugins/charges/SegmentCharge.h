@@ -54,24 +54,26 @@ struct SegmentChargeParams {
  * </pre>
  * The body sits on the drum's axis B (a weld to the drum, or a pin on the
  * drum), its mass centre at l_c from B. Its lag α is measured in the
- * carrier frame as in seed 000 (22): the centroid direction is
- * u = sin α e_out + cos α e_t, e_out pointing from the carrier axis A to B,
- * e_t = z × e_out.
+ * convention `lag_from` names (below): from the carrier radius as in seed
+ * 000 (22), u = sin α e_out + cos α e_t, e_out pointing from the carrier
+ * axis A to B, e_t = z × e_out; or from the downward vertical.
  *
  * - WithDrum: welded to the drum, turning with it (the papers' J_pr).
  * - Held: on a pin on the drum; the wall applies a torque T_w (drum on
  *   charge) that a kinetostatic analysis solves for so that the charge does
- *   not move in the carrier frame. Its power T_w·(ω_drum − ω_charge) is the
+ *   not move in the carrier frame (ground, for a drum on a fixed axis). Its power T_w·(ω_drum − ω_charge) is the
  *   power the wall spends sliding under the charge (grinding). Not a
  *   time-simulation model: T_w is an unknown of one instant.
  * - DynamicLag: on a free pin on the drum with the wall drag
  *   T = c_w (ω_drum − ω_charge); gravity and the carrier's centrifugal field
  *   restore it, and the lag settles where cos α = c_w ω_r/(m_z l_c ω1²(R ± r))
  *   without gravity. T·(ω_drum − ω_charge) is the grinding power (a Load).
+ *   Steady running (solveSteadyState, linearize) has the charge standing
+ *   still in the carrier frame, at its running lag.
  * - TorqueArm (tumbling mills, the torque-arm model of mill power: the
  *   charge's weight times its centroid's horizontal offset from the axis):
- *   the charge is no body; it stays at the
- *   lag α from the downward vertical while the shell turns under it. Its
+ *   the charge is no body; it stays at the lag α from the downward
+ *   vertical while the shell turns under it. Its
  *   mass and its inertia about the axis J_Bz are added to the shell's (the
  *   charge circulates with the shell, so the motor accelerates it and the
  *   bearings carry its weight through the shell's pin); its weight's line of
@@ -88,7 +90,8 @@ struct SegmentChargeParams {
  *   96 % of it at ω = 2ω_ε); the breakaway torque of a charge lifted rigidly
  *   before it slumps is not modelled. ω_c omits the ball radius (the
  *   sqrt(g/(R − r_ball)) form needs the ball size, which this element does
- *   not take).
+ *   not take). Empirical power models (Hogg–Fuerstenau) are not
+ *   implemented: their published form could not be checked here.
  *
  * Lag conventions (docs/charges.md has the picture): `Vertical` measures α
  * from the downward vertical (the gravity direction in the xy-plane; −y

@@ -121,6 +121,8 @@ TEST(SegmentCharge, SameLagWhereverTheMillStands) {
         scene->system().realize(s, SimTK::Stage::Acceleration);
         EXPECT_NEAR(probe(*scene, s, "charge.lag"), 40 * kDeg, 1e-13) << at;
         const AnalysisResult r = runAnalysis(spec);
+        ASSERT_NE(r.find("energy_balance_relative"), nullptr);
+        EXPECT_LT(std::abs(r.find("energy_balance_relative")->value), 1e-5) << at;
         const auto& last = r.rows.back();
         finals.push_back({last[r.findColumn("charge.lag")], last[r.findColumn("shell.speed")],
                           last[r.findColumn("charge.grinding_power")]});
@@ -234,6 +236,57 @@ TEST(TumblingMill, StartFromRestClosesTheEnergyBalance) {
     EXPECT_NEAR(end, expected, 1e-4 * expected);
     ASSERT_NE(r.find("energy_to_loads"), nullptr);
     EXPECT_GT(r.find("energy_to_loads")->value, 0);
+}
+
+// Bearing load: the torque-arm charge's weight reaches the shell's pin
+// (its mass is on the shell's axis, the couple moves its line of action):
+// at steady running the pin carries (m_shell + m) g straight up and no
+// horizontal force, as statics of shell plus a charge at rest says.
+TEST(SegmentCharge, TorqueArmWeightLoadsTheShellBearing) {
+    const ModelSpec spec = readMill({{"scenario:", "  - {type: JointReaction, name: trunnion, body: shell}\nscenario:"}});
+    auto scene = buildScene(spec);
+    SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
+    scene->system().realize(steady, SimTK::Stage::Acceleration);
+    const double weight = (60000 + oracles::segmentMass(oracleCharge(0.30))) * kG;
+    EXPECT_NEAR(probe(*scene, steady, "trunnion.on_shell_at_axis_y_ground"), weight, 1e-9 * weight);
+    EXPECT_NEAR(probe(*scene, steady, "trunnion.on_shell_at_axis_x_ground"), 0.0, 1e-9 * weight);
+}
+
+// A held charge body on a fixed axis (lag from the vertical), solved by
+// kinetostatics at four shell angles: the wall torque that holds it is the
+// same weight's moment m g r_c sin α the torque-arm law applies.
+TEST(SegmentCharge, HeldOnAFixedAxisNeedsTheTorqueArmTorque) {
+    const ModelSpec spec = readMill({{"motion: torque_arm", "motion: held"},
+                                     {"analysis: linearize", "analysis: kinetostatic\n  carrier: shell\n"
+                                                             "  carrier_speed: 1.9 rad/s\n  angle_points: 4"}});
+    const AnalysisResult r = runAnalysis(spec);
+    const double T = oracles::torqueArmTorque(oracleCharge(0.30), 40 * kDeg, kG);
+    ASSERT_EQ(r.rows.size(), 4u);
+    for (const auto& row : r.rows) {
+        EXPECT_NEAR(row[r.findColumn("charge.wall_torque")], T, 1e-9 * T);
+        EXPECT_NEAR(row[r.findColumn("charge.lag")], 40 * kDeg, 1e-12);
+    }
+}
+
+// A drum on a coaxial body (a shell on a girth-gear body turning about the
+// same fixed axis) is not carried: the lag is from the vertical by default,
+// and the papers' convention is refused there too.
+TEST(SegmentCharge, DrumOnACoaxialBodyHasAFixedAxis) {
+    const std::vector<std::pair<std::string, std::string>> coaxial = {
+        {"  - name: shell\n", "  - name: gear\n    inertia: 10 kg*m^2\n    joint: {type: pin, parent: ground}\n"
+                              "  - name: shell\n"},
+        {"joint: {type: pin, parent: ground, location: [0 m, 0 m, 0 m]}", "joint: {type: pin, parent: gear}"},
+        {"    lag_from: vertical\n", ""},
+        {"motion: torque_arm", "motion: dynamic_lag"},
+        {"lag: 40 deg", "initial_lag: 40 deg\n    wall_drag: 1.0e5 N*m*s/rad"}};
+    const ModelSpec spec = readMill(coaxial);
+    auto scene = buildScene(spec);
+    SimTK::State s = initialState(*scene, spec);
+    scene->system().realize(s, SimTK::Stage::Acceleration);
+    EXPECT_NEAR(probe(*scene, s, "charge.lag"), 40 * kDeg, 1e-13);
+    auto refused = coaxial;
+    refused.push_back({"    motion: dynamic_lag", "    lag_from: carrier_radius\n    motion: dynamic_lag"});
+    EXPECT_THROW(buildScene(readMill(refused)), SpecError);
 }
 
 // ---- linearize about the loaded running point (issue 19 item 5) ----

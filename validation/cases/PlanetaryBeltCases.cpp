@@ -121,7 +121,7 @@ ModelSpec modelFor(const BeltCase& c, const std::string& level, std::vector<Over
         o.push_back({std::string("elements.") + charge + ".length", fmt(c.material.drumLength) + " m"});
         o.push_back({std::string("elements.") + charge + ".bulk_density", fmt(bulk) + " kg/m^3"});
     }
-    if (level != "rigid_charge") {
+    if (level == "paper" || level == "elastic_held") {  // held charges (dynamic_lag refuses a lag)
         // SegmentCharge's lag is measured from the leading tangent (u = sin·e_out
         // + cos·e_t), the oracle's from the trailing one: lag = π − α.
         o.push_back({"elements.charge1.lag", fmt(M_PI - c.lag)});
