@@ -282,3 +282,31 @@ TEST(GearPair, ToothMeshFrequencyMeetsTheMeshModeInTheResonanceMap) {
 
 }  // namespace
 }  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+TEST(GearMesh, PitchRadiiThatDoNotFitThePinDistanceAreAnInputError) {
+    // Issue 20 item 9: sun R = 0.1 m, planet r = 0.05 m need the planet's pin
+    // 0.15 m from the carrier axis; at 0.16 m they cannot mesh.
+    auto text = [](const std::string& x) {
+        return "format_version: 1\nname: planet\n"
+               "bodies:\n"
+               "  - {name: carrier, inertia: 0.02 kg*m^2, joint: {type: pin, parent: ground}}\n"
+               "  - {name: drum, inertia: 0.004 kg*m^2, joint: {type: pin, parent: carrier, location: [" +
+               x +
+               ", 0 m, 0 m]}}\n"
+               "elements:\n"
+               "  - {type: GearMesh, name: mesh, carrier: carrier, planet: drum, fixed_pitch_radius: 0.1 m,"
+               " planet_pitch_radius: 0.05 m}\n"
+               "scenario: {analysis: transient, end_time: 1 s}\n";
+    };
+    const SpecError e = buildErrorOf(text("0.16 m"));
+    EXPECT_EQ(e.key(), "mesh.planet_pitch_radius");
+    EXPECT_TRUE(contains(e.what(), "0.16 m apart")) << e.what();
+    EXPECT_TRUE(contains(e.what(), "centre distance of 0.15 m")) << e.what();
+    EXPECT_NO_THROW(buildScene(readText("planet.yaml", text("0.15 m"), {})));
+}
+
+}  // namespace
+}  // namespace milldyn
