@@ -112,10 +112,13 @@ void registerShaftBearings(ElementRegistry& registry) {
     };
     s.crossCheck = [](const ElementSpec& e) {
         const auto& z = e.numbers("positions");
-        if (z.size() != 2)
+        if (z.size() == 1)
+            throw e.error("positions", "1 bearing cannot carry the shaft's tilting moment (a journal on the pin "
+                                       "is JournalFriction); give two");
+        if (z.size() > 2)
             throw e.error("positions", std::to_string(z.size()) +
                                            " bearings: a rigid shaft on more than two supports is statically "
-                                           "indeterminate (and one cannot carry a moment); give exactly two");
+                                           "indeterminate (the split needs their stiffness and alignment); give two");
         if (z[0] == z[1]) throw e.error("positions", "the two bearings must be at different axial positions");
         if (e.has("friction_coefficient") && e.number("friction_coefficient") > 0 && !(e.number("journal_diameter") > 0))
             throw e.error("journal_diameter", "friction needs the journal diameter d > 0 m");
