@@ -170,16 +170,26 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
     map.doc = "Dynamic factor of every coupling torque against rotor speed, the load harmonics following "
               "the speed; bands above a threshold are reported as speeds to avoid.";
     map.params = {
-        P::text("load", "name of the PeriodicLoad element"),
+        P::text("load", "name of the PeriodicLoad element (none: gear-mesh frequencies only)")
+            .optional(std::string("")),
+        P::text("rotor", "body whose speed is swept when there is no load").optional(std::string("")),
         P::quantity("speed_min", "rad/s", "lowest rotor speed").above(0),
         P::quantity("speed_max", "rad/s", "highest rotor speed").above(0),
         P::quantity("points", "1", "speeds, evenly spaced").optional(600.0).atLeast(2).atMost(100000),
-        P::quantity("load_events_per_revolution", "1", "z: P_1 = z·Ω (teeth per sprocket row)").above(0),
+        P::quantity("load_events_per_revolution", "1", "z: P_1 = z·Ω (teeth per sprocket row)").optional(0.0)
+            .above(0),
         P::quantity("threshold", "1", "dynamic factor above which a speed band is to be avoided")
             .optional(1.3).above(0),
     };
     map.crossCheck = [](const ElementSpec& e) {
         if (e.number("speed_max") <= e.number("speed_min")) throw e.error("speed_max", "must exceed speed_min");
+        if (e.has("load") && !e.has("load_events_per_revolution"))
+            throw e.error("load", "a load needs load_events_per_revolution");
+        if (!e.has("load") && e.has("load_events_per_revolution"))
+            throw e.error("load_events_per_revolution", "not used without a load");
+        if (!e.has("load") && !e.has("rotor"))
+            throw e.error("load", "give a PeriodicLoad (load) or, for gear-mesh frequencies only, the rotor body (rotor)");
+        if (e.has("load") && e.has("rotor")) throw e.error("rotor", "not used with a load (the load's body is the rotor)");
     };
     schemas["resonance_map"] = map;
     return schemas;
@@ -334,6 +344,15 @@ void addDefaultPlots(AnalysisResult& result) {
     }
     result.plots.push_back({"speeds", speeds});
     result.plots.push_back({"torques", torques});
+    // Bearings where they stand (ShaftBearings): each bearing's radial load.
+    std::vector<std::size_t> loads;
+    const std::string suffix = ".radial_load";
+    for (std::size_t i = 1; i < result.columnNames.size(); ++i) {
+        const std::string& n = result.columnNames[i];
+        if (n.size() > suffix.size() && n.compare(n.size() - suffix.size(), suffix.size(), suffix) == 0)
+            loads.push_back(i);
+    }
+    if (!loads.empty()) result.plots.push_back({"bearing_loads", loads});
 }
 
 SampleTable::SampleTable(const Scene& scene, AnalysisResult& result) : m_scene(scene), m_result(result) {

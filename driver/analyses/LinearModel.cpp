@@ -30,6 +30,15 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     if (x0.getNQ() != n)
         throw AnalysisError("linearize: only joints whose q̇ = u (pins, gimbals, bushings) are supported, got nq = " +
                             std::to_string(x0.getNQ()) + ", nu = " + std::to_string(n));
+    // Constraints (a rigid GearPair, GearMesh, a rigid BeltDrive) tie the
+    // coordinates: M, C and K would have to be reduced to the independent
+    // ones, which this linearization does not do; refuse rather than give
+    // the unconstrained system's modes.
+    const auto& matter = scene.matter();
+    for (SimTK::ConstraintIndex c(0); c < matter.getNumConstraints(); ++c)
+        if (!matter.getConstraint(c).isDisabled(x0))
+            throw AnalysisError("linearize: the model has kinematic constraints (a rigid GearPair or BeltDrive, a "
+                                "GearMesh), which this linearization does not reduce; use GearPair law: compliant");
     const auto& probes = scene.probes();
     const int np = static_cast<int>(probes.size());
 

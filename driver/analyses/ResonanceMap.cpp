@@ -13,14 +13,103 @@
 #include "driver/analyses/LoadResponse.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace milldyn {
+
+namespace {
+
+/// Not a free rotation (ω² below 1e-12 of the largest, as linearize counts).
+bool isElastic(const LinearModel& lm, int k) {
+    const double w = lm.naturalFrequencies[k], top = lm.naturalFrequencies.maxCoeff();
+    return w * w > 1e-12 * top * top;
+}
+
+/// The scene's order excitations (a gear pair's tooth-mesh frequency
+/// z·|ω_gear|) against the rotor speed Ω: the steady speed ratio ρ =
+/// ω_gear/Ω makes each a line f = z·|ρ|·Ω; where it meets an elastic
+/// natural frequency ω_k, at Ω_k = ω_k/(z|ρ|), the mesh excites mode k.
+/// Adds a column per excitation to `result` (values per row of `speeds`)
+/// and the crossings in the range as results and notes.
+void addOrderExcitations(const Scene& scene, const SimTK::State& steady, const LinearModel& lm,
+                         const SceneBody& rotor, double wMin, double wMax, AnalysisResult& result) {
+    const double rotorSpeed = pinSpeed(steady, rotor.mobod);
+    for (const auto& e : scene.orderExcitations()) {
+        const SceneBody* body = scene.findBody(e.body);
+        if (!body || !(std::abs(rotorSpeed) > 0)) continue;
+        const double perRotor = e.eventsPerRevolution * std::abs(pinSpeed(steady, body->mobod) / rotorSpeed);
+        result.columnNames.push_back(e.name);
+        result.columnUnits.push_back("rad/s");
+        for (auto& row : result.rows) row.push_back(perRotor * row[0]);
+        result.results.push_back({e.name + ".per_rotor_speed", perRotor, "1",
+                                  "excitation frequency per rotor speed: z x (speed of " + e.body + ")/(speed of " +
+                                      rotor.name + ") at steady running"});
+        int elastic = 0;  // numbered as linearize numbers them: elastic modes from 1
+        for (int k = 0; k < lm.naturalFrequencies.size(); ++k) {
+            const double wk = lm.naturalFrequencies[k];
+            if (!isElastic(lm, k)) continue;
+            ++elastic;
+            const double at = wk / perRotor;
+            if (at < wMin || at > wMax) continue;
+            const std::string tag = e.name + ".meets_mode_" + std::to_string(elastic);
+            result.results.push_back({tag + "_at_rotor_speed", at, "rad/s",
+                                      "rotor speed where this excitation equals natural frequency " +
+                                          std::to_string(elastic)});
+            char text[200];
+            std::snprintf(text, sizeof text, "%s meets mode %d (%.4g Hz) at %.4g rpm of %s", e.name.c_str(), elastic,
+                          wk / (2 * M_PI), at * 60 / (2 * M_PI), rotor.name.c_str());
+            result.notes.push_back(text);
+        }
+    }
+}
+
+/// resonance_map without a load: the order excitations only (a Campbell
+/// diagram of the tooth-mesh frequencies against the natural frequencies).
+AnalysisResult runOrderMap(const ModelSpec& spec, const Scene& scene, const SimTK::State& steady,
+                           const LinearModel& lm, const ProgressFn& progress) {
+    const ElementSpec& sc = spec.scenario;
+    const SceneBody* rotor = scene.findBody(sc.text("rotor"));
+    if (!rotor) throw sc.error("rotor", "'" + sc.text("rotor") + "' is not a body of this model");
+    if (scene.orderExcitations().empty())
+        throw sc.error("rotor", "the model has no excitation that follows the speed (a GearPair with teeth or "
+                                "module) and no load");
+    AnalysisResult result;
+    result.derived = derivedResults(scene);
+    result.analysis = "resonance_map";
+    result.tableName = "resonance_map";
+    result.plotXLabel = "rotor speed [rad/s]";
+    result.columnNames = {"rotor_speed", "rotor_speed_rpm"};
+    result.columnUnits = {"rad/s", "rpm"};
+    const double wMin = sc.number("speed_min"), wMax = sc.number("speed_max");
+    const int points = static_cast<int>(sc.number("points"));
+    for (int i = 0; i < points; ++i) {
+        const double w = wMin + (wMax - wMin) * i / (points - 1);
+        result.rows.push_back({w, w * 60 / (2 * M_PI)});
+    }
+    addOrderExcitations(scene, steady, lm, *rotor, wMin, wMax, result);
+    int elastic = 0;
+    for (int k = 0; k < lm.naturalFrequencies.size(); ++k) {
+        if (!isElastic(lm, k)) continue;
+        result.columnNames.push_back("natural_frequency_" + std::to_string(++elastic));
+        result.columnUnits.push_back("rad/s");
+        for (auto& row : result.rows) row.push_back(lm.naturalFrequencies[k]);
+    }
+    addLinearModelOutputs(lm, result);
+    std::vector<std::size_t> cols;
+    for (std::size_t c = 2; c < result.columnNames.size(); ++c) cols.push_back(c);
+    result.plots.push_back({"resonance_map", cols});
+    if (progress) progress(points, points);
+    return result;
+}
+
+}  // namespace
 
 AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress) {
     const ElementSpec& sc = spec.scenario;
     auto scene = buildScene(spec);
     const SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
     const LinearModel lm = linearizeScene(*scene, steady);
+    if (sc.text("load").empty()) return runOrderMap(spec, *scene, steady, lm, progress);
     const PeriodicLoad* load = scene->findElement<PeriodicLoad>(sc.text("load"));
     if (!load) throw sc.error("load", "'" + sc.text("load") + "' is not a PeriodicLoad element of this model");
     const LoadResponse response(*scene, lm, *load);
@@ -100,6 +189,10 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
         i = j + 1;
     }
     result.results.push_back({"avoid_bands", double(bands), "1", "speed bands above the threshold"});
+    // The load's first body is the rotor whose speed is swept.
+    for (const auto& b : scene->bodies())
+        if (!load->bodies().empty() && b.mobod.getMobilizedBodyIndex() == load->bodies()[0].getMobilizedBodyIndex())
+            addOrderExcitations(*scene, steady, lm, b, wMin, wMax, result);
     std::vector<std::size_t> cols;
     for (std::size_t o = 0; o < outputs.size(); ++o) cols.push_back(2 + o);
     result.plots.push_back({"resonance_map", cols});

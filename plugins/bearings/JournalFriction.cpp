@@ -42,9 +42,12 @@ double JournalFriction::getLoad(const State& s) const {
     return std::max(0.0, h[0] + (s.getTime() - h[1]) * (h[0] - h[2]) / (h[1] - h[3]));
 }
 
+double JournalFriction::calcFrictionTorque(double load, const JournalFrictionParams& p, double u) {
+    return load * p.frictionCoefficient * p.journalDiameter / 2 * std::tanh(u / p.smoothingSpeed);
+}
+
 double JournalFriction::calcTorque(const State& s) const {
-    const double u = m_body.getOneU(s, MobilizerUIndex(0));
-    return getLoad(s) * m_p.frictionCoefficient * m_p.journalDiameter / 2 * std::tanh(u / m_p.smoothingSpeed);
+    return calcFrictionTorque(getLoad(s), m_p, m_body.getOneU(s, MobilizerUIndex(0)));
 }
 
 double JournalFriction::calcPower(const State& s) const {

@@ -63,8 +63,11 @@ public:
     const JournalFrictionParams& params() const { return m_p; }
     const SimTK::MobilizedBody& body() const { return m_body; }
 
-    /// |R| the journal carries now [N], at Stage::Acceleration.
-    double calcReaction(const SimTK::State& s) const;
+    /// |R| the journal carries now [N], at Stage::Acceleration (a split
+    /// over several bearings overrides it: ShaftBearings).
+    virtual double calcReaction(const SimTK::State& s) const;
+    /// M = load·f·d/2·tanh(u/ω_s) [N*m], the law every journal uses.
+    static double calcFrictionTorque(double load, const JournalFrictionParams& p, double relativeSpeed);
     /// |R| the friction torque is computed from [N] (the kept load).
     double getLoad(const SimTK::State& s) const;
     /// Friction torque on the body, opposing its relative rotation [N*m].

@@ -220,6 +220,18 @@ public:
     void addSketch(SketchFn f) { m_sketches.push_back(std::move(f)); }
     const std::vector<SketchFn>& sketches() const { return m_sketches; }
 
+    /// An excitation whose frequency follows a body's speed: `eventsPerRevolution`
+    /// events per turn of `body` relative to its parent (a gear's tooth-mesh
+    /// frequency f_z = z·n). resonance_map reports where it meets the
+    /// natural frequencies.
+    struct OrderExcitation {
+        std::string name;
+        std::string body;
+        double eventsPerRevolution = 0;
+    };
+    void addOrderExcitation(OrderExcitation e) { m_orderExcitations.push_back(std::move(e)); }
+    const std::vector<OrderExcitation>& orderExcitations() const { return m_orderExcitations; }
+
     /// Values elements derive from their parameters (see DerivedValue).
     void addDerivedValue(DerivedValue v) { m_derived.push_back(std::move(v)); }
     const std::vector<DerivedValue>& derivedValues() const { return m_derived; }
@@ -253,6 +265,7 @@ private:
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_switchables;
     std::vector<BuildNote> m_notes;
     std::vector<DerivedValue> m_derived;
+    std::vector<OrderExcitation> m_orderExcitations;
     std::vector<BuildNote> m_omitted;
     std::vector<SketchFn> m_sketches;
     std::vector<std::function<void(SimTK::State&)>> m_initializers;

@@ -12,7 +12,13 @@ using namespace SimTK;
 
 GearMesh::GearMesh(SimbodyMatterSubsystem& matter, const MobilizedBody& carrier, const MobilizedBody& planet,
                    const GearMeshParams& p)
-    : Implementation(matter, 1, 0, 0), m_p(p), m_side(p.internal ? 1.0 : -1.0) {
+    // Rolling on the fixed gear: R q1 + side r q2 = 0 (q1 the carrier's angle).
+    : RollingConstraint(matter, carrier, planet, p.fixedPitchRadius, (p.internal ? 1.0 : -1.0) * p.planetPitchRadius),
+      m_p(p), m_side(p.internal ? 1.0 : -1.0) {
+    m_geometry.pitchRadius1 = p.fixedPitchRadius;
+    m_geometry.pitchRadius2 = p.planetPitchRadius;
+    m_geometry.internal = p.internal;
+    m_geometry.pressureAngle = p.pressureAngle;
     auto bad = [](const std::string& what) { throw std::invalid_argument("GearMesh: " + what); };
     if (!(p.fixedPitchRadius > 0) || !std::isfinite(p.fixedPitchRadius))
         bad("fixed_pitch_radius must be finite and > 0 m");
@@ -27,34 +33,14 @@ GearMesh::GearMesh(SimbodyMatterSubsystem& matter, const MobilizedBody& carrier,
     m_groundBody = addConstrainedBody(matter.getGround());
     m_carrierBody = addConstrainedBody(carrier);
     m_planetBody = addConstrainedBody(planet);
-    m_carrierMob = addConstrainedMobilizer(carrier);
-    m_planetMob = addConstrainedMobilizer(planet);
 }
 
 double GearMesh::calcPlanetAngle(double carrierAngle) const {
-    // combine(q1, q2) = 0
+    // R q1 + side r q2 = 0
     return -m_p.fixedPitchRadius * carrierAngle / (m_side * m_p.planetPitchRadius);
 }
 
 double GearMesh::calcPlanetSpeed(double carrierSpeed) const { return calcPlanetAngle(carrierSpeed); }
-
-void GearMesh::calcPositionErrors(const State& s, const Array_<Transform, ConstrainedBodyIndex>&,
-                                  const Array_<Real, ConstrainedQIndex>& q, Array_<Real>& perr) const {
-    const MobilizerQIndex q0(0);
-    perr[0] = combine(getOneQ(s, q, m_carrierMob, q0), getOneQ(s, q, m_planetMob, q0));
-}
-
-void GearMesh::calcPositionDotErrors(const State& s, const Array_<SpatialVec, ConstrainedBodyIndex>&,
-                                     const Array_<Real, ConstrainedQIndex>& qdot, Array_<Real>& pverr) const {
-    const MobilizerQIndex q0(0);
-    pverr[0] = combine(getOneQDot(s, qdot, m_carrierMob, q0), getOneQDot(s, qdot, m_planetMob, q0));
-}
-
-void GearMesh::calcPositionDotDotErrors(const State& s, const Array_<SpatialVec, ConstrainedBodyIndex>&,
-                                        const Array_<Real, ConstrainedQIndex>& qdotdot, Array_<Real>& paerr) const {
-    const MobilizerQIndex q0(0);
-    paerr[0] = combine(getOneQDotDot(s, qdotdot, m_carrierMob, q0), getOneQDotDot(s, qdotdot, m_planetMob, q0));
-}
 
 void GearMesh::addInPositionConstraintForces(const State& s, const Array_<Real>& multipliers,
                                              Array_<SpatialVec, ConstrainedBodyIndex>& bodyForcesInA,
@@ -62,15 +48,11 @@ void GearMesh::addInPositionConstraintForces(const State& s, const Array_<Real>&
     const double lambda = multipliers[0];
     const Transform& X_AC = getBodyTransformFromState(s, m_carrierBody);  // A is Ground here
     const Transform& X_AP = getBodyTransformFromState(s, m_planetBody);
-    Vec3 out = X_AP.p() - X_AC.p();
-    out[2] = 0;
-    out = out / out.norm();
-    const Vec3 tangent(-out[1], out[0], 0);  // z × e_out
-    const Vec3 pitchPointInA = X_AP.p() + m_side * m_p.planetPitchRadius * out;
+    const Vec3 pitchPointInA = m_geometry.calcPitchPointOnGear2(X_AC.p(), X_AP.p());
     const Vec3 p_PS = ~X_AP.R() * (pitchPointInA - X_AP.p());
-    // Simbody applies −(these forces): the fixed gear's push on the planet is
-    // −λ e_t tangentially and |λ| tan(φ) away from the fixed gear (−side e_out).
-    const Vec3 applied = lambda * tangent + std::abs(lambda) * std::tan(m_p.pressureAngle) * m_side * out;
+    // Simbody applies −(these forces): the fixed gear pushes the planet with
+    // tangential force −λ along e_t and separates it along the line of action.
+    const Vec3 applied = -m_geometry.calcForceOnGear2(-lambda, X_AC.p(), X_AP.p());
     addInStationForce(s, m_planetBody, p_PS, applied, bodyForcesInA);
 }
 
@@ -94,6 +76,14 @@ void buildGearMesh(const ElementSpec& spec, Scene& scene) {
     p.planetPitchRadius = spec.number("planet_pitch_radius");
     p.internal = spec.text("rolling") == "internal";
     p.pressureAngle = spec.number("pressure_angle");
+    GearGeometry geometry;
+    geometry.pitchRadius1 = p.fixedPitchRadius;
+    geometry.pitchRadius2 = p.planetPitchRadius;
+    geometry.internal = p.internal;
+    Vec3 arm = planet->mobod.getDefaultInboardFrame().p();  // the planet's axis in the carrier frame
+    arm[2] = 0;
+    const std::string misfit = geometry.checkCentreDistance(arm.norm());
+    if (!misfit.empty()) throw spec.error("planet_pitch_radius", misfit);
     auto* impl = new GearMesh(scene.matter(), carrier->mobod, planet->mobod, p);
     Constraint::Custom constraint(impl);
     const ConstraintIndex index = constraint.getConstraintIndex();

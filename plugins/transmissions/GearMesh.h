@@ -5,6 +5,7 @@
 // along the line of action.
 
 #include "plugins/scene/Scene.h"
+#include "plugins/transmissions/GearPair.h"
 
 namespace milldyn {
 
@@ -38,8 +39,11 @@ struct GearMeshParams {
  * mobilizer reaction at B and at the carrier's axis A, as in the paper.
  * Because |λ| is not linear in λ, that holds only because N is workless
  * here; a gear whose radial direction were free would need a contact model.
+ * The mesh geometry (pitch point, line of action, force components) is
+ * GearPair's GearGeometry with the fixed gear as gear 1 (the ring when
+ * internal) and the planet as gear 2, spur (β = 0).
  */
-class GearMesh : public SimTK::Constraint::Custom::Implementation {
+class GearMesh : public RollingConstraint {
 public:
     /// Throws std::invalid_argument naming a bad parameter.
     GearMesh(SimTK::SimbodyMatterSubsystem& matter, const SimTK::MobilizedBody& carrier,
@@ -58,30 +62,15 @@ public:
     /// Separating force N = |F_t| tan(pressure angle) [N], >= 0.
     double calcSeparatingForce(const SimTK::State& s, const SimTK::Constraint& self) const;
 
-    void calcPositionErrors(const SimTK::State& s, const SimTK::Array_<SimTK::Transform, SimTK::ConstrainedBodyIndex>& X_AB,
-                            const SimTK::Array_<SimTK::Real, SimTK::ConstrainedQIndex>& q,
-                            SimTK::Array_<SimTK::Real>& perr) const override;
-    void calcPositionDotErrors(const SimTK::State& s,
-                               const SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& V_AB,
-                               const SimTK::Array_<SimTK::Real, SimTK::ConstrainedQIndex>& qdot,
-                               SimTK::Array_<SimTK::Real>& pverr) const override;
-    void calcPositionDotDotErrors(const SimTK::State& s,
-                                  const SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& A_AB,
-                                  const SimTK::Array_<SimTK::Real, SimTK::ConstrainedQIndex>& qdotdot,
-                                  SimTK::Array_<SimTK::Real>& paerr) const override;
     void addInPositionConstraintForces(const SimTK::State& s, const SimTK::Array_<SimTK::Real>& multipliers,
                                        SimTK::Array_<SimTK::SpatialVec, SimTK::ConstrainedBodyIndex>& bodyForcesInA,
                                        SimTK::Array_<SimTK::Real, SimTK::ConstrainedQIndex>& qForces) const override;
 
 private:
     GearMeshParams m_p;
+    GearGeometry m_geometry;  // gear 1 the fixed gear, gear 2 the planet
     double m_side;  // −1 external, +1 internal: P = B + side·r·e_out
     SimTK::ConstrainedBodyIndex m_groundBody, m_carrierBody, m_planetBody;
-    SimTK::ConstrainedMobilizerIndex m_carrierMob, m_planetMob;
-
-    double combine(double carrierValue, double planetValue) const {
-        return m_p.fixedPitchRadius * carrierValue + m_side * m_p.planetPitchRadius * planetValue;
-    }
 };
 
 }  // namespace milldyn

@@ -11,7 +11,7 @@ namespace milldyn {
 
 std::vector<ReportSection> reportSections() {
     return {burrMillReportSection(), rollCrusherReportSection(), planetaryGearReportSection(),
-            planetaryBeltReportSection(), beadMillReportSection()};
+            planetaryBeltReportSection(), beadMillReportSection(), tumblingMillReportSection()};
 }
 
 const ValidationRow* findRow(const std::vector<ValidationRow>& rows, const std::string& caseName,
