@@ -210,7 +210,7 @@ private:
     double readNumber(const YAML::Node& n, const std::string& key, const std::string& unit) const {
         const std::string text = scalar(n, key);
         try {
-            const double v = units::toSI(text, unit);
+            const double v = units::toSIRequiringUnit(text, unit);
             if (!std::isfinite(v)) throw error(n, key, "value is not finite");
             return v;
         } catch (const units::UnitError& e) {

@@ -19,7 +19,7 @@ for size in 100x200 500x1000; do
   "$BIN" sweep "$M" --grid "elements.drive.acceleration_time=1000:1000:1" --jobs 1 --out "$OUT/tpinf_$size" >/dev/null
   # The start, with journal friction (extrapolated loads, accuracy 1e-8:
   # friction torques within 0.1 %, docs/planetary_gear.md).
-  "$BIN" run "$M" --scenario start --set outputs.sample_interval=0.01 \
+  "$BIN" run "$M" --scenario start --set outputs.sample_interval=0.01s \
     --out "$OUT/start_$size" --quiet
   "$BIN" run "$M" --scenario turn --set fidelity.level=held_charge --set elements.charge1.lag=45deg \
     --set elements.charge2.lag=45deg --out "$OUT/turn45_$size" --quiet

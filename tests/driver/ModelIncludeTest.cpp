@@ -114,7 +114,7 @@ TEST(ModelInclude, IncludedValuesAreLocatedInTheirPartWithTheChain) {
 
 TEST(ModelInclude, SetOverridesReachIncludedValuesByTheirPrefixedNames) {
     const ModelSpec spec = read(kData + "/include_two_drums.yaml",
-                                {{"elements.left_charge.constant_torque", "60 N*m"}, {"bodies.right_drum.inertia", "3"}});
+                                {{"elements.left_charge.constant_torque", "60 N*m"}, {"bodies.right_drum.inertia", "3 kg*m^2"}});
     EXPECT_EQ(spec.findElement("left_charge")->number("constant_torque"), 60);
     EXPECT_EQ(spec.findElement("right_charge")->number("constant_torque"), 80);
     EXPECT_EQ(spec.findBody("right_drum")->inertia, 3);

@@ -245,8 +245,8 @@ void steadyCases(const Size& size, const std::string& filter, std::vector<Valida
         o.push_back({"scenarios.turn.angle_points", std::to_string(points)});
         o.push_back({"scenarios.turn.carrier_speed", fmt(w) + " rad/s"});
         if (v.motion == oc::ChargeMotion::kHeldInCarrierFrame) {
-            o.push_back({"elements.charge1.lag", fmt(v.lag)});
-            o.push_back({"elements.charge2.lag", fmt(v.lag)});
+            o.push_back({"elements.charge1.lag", fmt(v.lag) + " rad"});
+            o.push_back({"elements.charge2.lag", fmt(v.lag) + " rad"});
         }
         const AnalysisResult r = runKinetostatic(size, o);
         double worstTorque = 0, worstReaction = 0, worstJ = 0;
