@@ -266,6 +266,9 @@ std::string hostName() {
 
 int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     const ModelSpec spec = readModelFile(a.model, defaultModelReader(), a.overrides);
+    const std::string noGravity = gravityWarning(spec, defaultModelReader());
+    if (!noGravity.empty()) err << "milldyn: warning: " << noGravity << "\n";
+    for (const auto& n : spec.readNotes) err << "milldyn: note: " << n << "\n";
     ensureDirectory(a.outDir);
     const bool showProgress = !a.quiet && ::isatty(STDERR_FILENO);
     auto lastReport = std::chrono::steady_clock::now();
@@ -340,6 +343,7 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
 
 int commandInfo(const Arguments& a, std::ostream& out) {
     const ModelSpec spec = readModelFile(a.model, defaultModelReader(), a.overrides);
+    const std::string noGravity = gravityWarning(spec, defaultModelReader());
     auto scene = buildScene(spec);
     const SimTK::State state = scene->system().getDefaultState();
     if (a.json) {
@@ -358,6 +362,9 @@ int commandInfo(const Arguments& a, std::ostream& out) {
         j["scenario"] = spec.scenario.type;
         j["integrator"] = {{"name", spec.integrator.name}, {"accuracy", spec.integrator.accuracy}};
         if (!spec.fidelity.empty()) j["fidelity"] = spec.fidelity;
+        j["warnings"] = nlohmann::ordered_json::array();
+        if (!noGravity.empty()) j["warnings"].push_back(noGravity);
+        j["notes"] = spec.readNotes;
         j["derived"] = nlohmann::ordered_json::object();
         for (const auto& d : scene->derivedValues())
             j["derived"][d.name] = {{"value", d.value}, {"unit", d.unit}, {"description", d.doc}};
@@ -372,6 +379,8 @@ int commandInfo(const Arguments& a, std::ostream& out) {
         return 0;
     }
     out << spec.name << " (" << spec.file << ")\n";
+    if (!noGravity.empty()) out << "  warning: " << noGravity << "\n";
+    for (const auto& n : spec.readNotes) out << "  note: " << n << "\n";
     out << "  bodies: " << scene->bodies().size() << ", mobilities (DOF): " << state.getNU()
         << ", constraints: " << scene->matter().getNumConstraints()
         << ", forces: " << scene->forces().getNumForces() << "\n";

@@ -243,6 +243,7 @@ void registerSegmentCharge(ElementRegistry& registry) {
     using P = ParamSchema;
     ElementSchema s;
     s.type = "SegmentCharge";
+    s.needsGravity = true;
     s.doc = "Grinding charge as a circular-segment body in a drum (rigid with it, held at a lag, or dragged).";
     s.params = {
         P::body("drum", "drum (on a pin on its carrier) holding the charge"),

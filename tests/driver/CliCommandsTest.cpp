@@ -134,3 +134,22 @@ TEST(CliCommands, EndTimeOptionReadsABareNumberAsSecondsButSetNeedsTheUnit) {
 
 }  // namespace
 }  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+TEST(CliCommands, ModelWithoutGravityWarnsNamingTheElementsLoadedByWeight) {
+    const std::string model = std::string(MILLDYN_SOURCE_DIR) + "/models/planetary_gear_100x200.yaml";
+    const Ran with = cli({"info", model});
+    ASSERT_EQ(with.code, 0) << with.err;
+    EXPECT_FALSE(contains(with.out, "warning")) << with.out;
+    const Ran without = cli({"info", model, "--set", "gravity=[0, 0, 0]"});
+    ASSERT_EQ(without.code, 0) << without.err;
+    EXPECT_TRUE(contains(without.out, "warning: the model has no gravity: but ")) << without.out;
+    EXPECT_TRUE(contains(without.out, "charge1 (SegmentCharge)")) << without.out;
+    EXPECT_TRUE(contains(without.out, "(JournalFriction)")) << without.out;
+    EXPECT_FALSE(contains(cli({"info", kModels + "burr_mill_5p5kW_idle.yaml"}).out, "warning"));
+}
+
+}  // namespace
+}  // namespace milldyn

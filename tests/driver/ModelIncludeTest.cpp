@@ -216,7 +216,7 @@ TEST_F(IncludeFiles, PartWithoutBodiesOrElementsAddsNothingAndAnEmptyPartIsAnErr
     write("parts/nothing.yaml", "description: only words\n");
     write("parts/empty.yaml", "");
     const std::string ok = write("ok.yaml", "format_version: 1\nname: x\ninclude: parts/nothing.yaml\n"
-                                            "bodies:\n  - {name: r, inertia: 1, joint: {type: pin}}\n"
+                                            "bodies:\n  - {name: r, inertia: 1 kg*m^2, joint: {type: pin}}\n"
                                             "scenario: {analysis: linearize}\n");
     EXPECT_EQ(read(ok).bodies.size(), 1u);
     const std::string bad = write("bad.yaml", "format_version: 1\nname: x\ninclude: parts/empty.yaml\n"

@@ -117,7 +117,7 @@ ModelSpec modelFor(const BeltCase& c, const std::string& level, std::vector<Over
     }
     const double bulk = c.material.chargeDensity * c.material.bulkFraction;
     for (const char* charge : {"charge1", "charge2"}) {
-        o.push_back({std::string("elements.") + charge + ".half_angle", fmt(c.halfAngle)});
+        o.push_back({std::string("elements.") + charge + ".half_angle", fmt(c.halfAngle) + " rad"});
         o.push_back({std::string("elements.") + charge + ".length", fmt(c.material.drumLength) + " m"});
         o.push_back({std::string("elements.") + charge + ".bulk_density", fmt(bulk) + " kg/m^3"});
     }
