@@ -192,6 +192,19 @@ Arguments parseArguments(const std::vector<std::string>& args, std::string* help
                                  return near.empty() ? std::string() : " (did you mean '" + near + "'?)";
                              }());
     }
+    // An option of another command: say which command takes it.
+    if (cl.commands.count(args[0])) {
+        const CLI::App* given = cl.commands.at(args[0]);
+        for (std::size_t i = 1; i < args.size(); ++i) {
+            if (args[i].rfind("--", 0) != 0) continue;
+            const std::string option = args[i].substr(0, args[i].find('='));
+            if (given->get_option_no_throw(option)) continue;
+            std::string owners;
+            for (const auto& c : cl.commands)
+                if (c.second->get_option_no_throw(option)) owners += (owners.empty() ? "" : " or ") + c.first;
+            if (!owners.empty()) throw UsageError(option + " goes with " + owners);
+        }
+    }
     std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
     try {
         cl.app.parse(reversed);

@@ -66,6 +66,8 @@ TEST(CliCommands, BadOptionsAndCommandsExitTwoWithOneLine) {
         EXPECT_TRUE(r.out.empty()) << r.out;
     }
     EXPECT_TRUE(contains(cli({"runn", "x.yaml"}).err, "did you mean 'run'?"));
+    EXPECT_TRUE(contains(cli({"info", "x.yaml", "--schematic"}).err, "--schematic goes with run"));
+    EXPECT_TRUE(contains(cli({"run", "x.yaml", "--report=out"}).err, "--report goes with validate"));
     EXPECT_TRUE(contains(cli({"elements", "InductionMotr"}).err, "did you mean 'InductionMotor'?"));
 }
 
