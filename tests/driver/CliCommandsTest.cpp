@@ -155,3 +155,23 @@ TEST(CliCommands, ModelWithoutGravityWarnsNamingTheElementsLoadedByWeight) {
 
 }  // namespace
 }  // namespace milldyn
+
+#include "validation/oracles/BeadMillOracle.h"
+
+namespace milldyn {
+namespace {
+
+TEST(CliCommands, InfoJsonGivesTheEq2ShaftDiameterAtFullPrecision) {
+    const Ran r = cli({"info", kModels + "bead_mill_5disc_0p1m.yaml", "--json"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    ASSERT_TRUE(j["derived"].contains("rotor.shaft_diameter")) << r.out;
+    // The oracle's eq (2) for 5 discs of 0.1 m at L_p = 0.267 m; both read
+    // papers/BeadMillTable1, so they agree to rounding.
+    EXPECT_NEAR(j["derived"]["rotor.shaft_diameter"]["value"].get<double>(),
+                oracles::beadMillShaftDiameter(5, 0.1, 0.267), 1e-15);
+    EXPECT_EQ(j["derived"]["rotor.shaft_diameter"]["unit"], "m");
+}
+
+}  // namespace
+}  // namespace milldyn
