@@ -103,6 +103,9 @@ ModelInfo describeModel(const ModelSpec& spec) {
         info.timeIntegration = "none (" + spec.scenario.type + " analysis)";
     }
     for (const auto& p : scene->probes()) info.outputs.push_back({p.name, p.unit});
+    const std::string noGravity = gravityWarning(spec, defaultModelReader());
+    if (!noGravity.empty()) info.warnings.push_back(noGravity);
+    info.notes = spec.readNotes;
     return info;
 }
 

@@ -86,6 +86,8 @@ struct ModelInfo {
         std::string name, unit;
     };
     std::vector<Output> outputs;
+    std::vector<std::string> warnings;  ///< e.g. elements that need gravity in a model without it
+    std::vector<std::string> notes;     ///< what the reader did (an analysis switched by --set, keys dropped)
 };
 /// Builds the scene (throws SpecError like a run would) and describes it.
 ModelInfo describeModel(const ModelSpec& spec);

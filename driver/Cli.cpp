@@ -4,6 +4,7 @@
 #include "driver/ModelFile.h"
 #include "driver/SceneBuilder.h"
 #include "driver/PluginLoader.h"
+#include "driver/SchemaReference.h"
 #include "driver/Sweep.h"
 #include "driver/SweepMpi.h"
 #include "driver/analyses/Analysis.h"
@@ -14,7 +15,11 @@
 #include "validation/cases/ValidationCases.h"
 #include "validation/report/ReportWriter.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
+#include <cctype>
+#include <map>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -32,13 +37,17 @@ const char* kUsage =
     "                         [--preset fast|balanced|accurate]  (the model's presets:; --set and\n"
     "                         --integrator/--accuracy still win over the preset's choices)\n"
     "                         [--schematic [--schematic-at t1,t2,...]]   (2-D pictures, docs/schematic.md)\n"
-    "  milldyn info MODEL.yaml [--set path=value]...\n"
+    "  milldyn info MODEL.yaml [--set path=value]... [--json]\n"
     "  milldyn validate [--filter TEXT] [--json] [--report DIR]\n"
     "  milldyn sweep MODEL.yaml (--grid path=a:b:n... | --lhs N --range path=a:b...) [--seed S]\n"
     "                           [--jobs N] [--shard i/N | --mpi] [--out DIR] [--set path=value]...\n"
     "  mpirun -np N milldyn sweep ... --mpi      (each rank runs its slice; rank 0 writes the table)\n"
     "  milldyn merge DIR... --out DIR\n"
-    "  milldyn --version | --help\n"
+    "  milldyn elements [TYPE] [--json]   every element type: keys, units, defaults, ranges\n"
+    "  milldyn analyses [KIND]            every analysis (scenario.analysis) and its keys\n"
+    "  milldyn schema                     JSON Schema of the model format (for YAML editors)\n"
+    "  milldyn completion                 bash completion script\n"
+    "  milldyn help [COMMAND] | COMMAND --help | --version\n"
     "  any command: --plugin LIB.so (repeatable) loads element types from a plugin library\n";
 
 class UsageError : public std::runtime_error {
@@ -66,6 +75,7 @@ struct Arguments {
     bool mpi = false;  ///< sweep --mpi: one slice per MPI rank
     bool schematic = false;     ///< run --schematic: SVG/PNG pictures of the machine
     std::string schematicAt;    ///< --schematic-at: times or carrier angles
+    std::string topic;          ///< help COMMAND, elements TYPE, analyses KIND
 };
 
 std::size_t parseCount(const std::string& option, const std::string& text, std::size_t max) {
@@ -76,59 +86,175 @@ std::size_t parseCount(const std::string& option, const std::string& text, std::
     return static_cast<std::size_t>(v);
 }
 
-Arguments parseArguments(const std::vector<std::string>& args) {
-    Arguments a;
-    if (args.empty()) throw UsageError("no command given");
-    a.command = args[0];
-    auto value = [&](std::size_t& i) -> const std::string& {
-        if (i + 1 >= args.size()) throw UsageError(args[i] + " needs a value");
-        return args[++i];
-    };
-    for (std::size_t i = 1; i < args.size(); ++i) {
-        const std::string& arg = args[i];
-        if (arg == "--out") a.outDir = value(i);
-        else if (arg == "--set") a.overrides.push_back(parseOverride(value(i)));
-        else if (arg == "--integrator") a.overrides.push_back({"integrator.name", value(i)});
-        else if (arg == "--accuracy") a.overrides.push_back({"integrator.accuracy", value(i)});
-        else if (arg == "--end-time") a.overrides.push_back({"scenario.end_time", value(i)});
-        else if (arg == "--scenario") a.overrides.push_back({"use_scenario", value(i)});
-        else if (arg == "--preset") a.overrides.push_back({"preset", value(i)});
-        else if (arg == "--filter") a.filter = value(i);
-        else if (arg == "--report") a.reportDir = value(i);
-        else if (arg == "--grid") a.grids.push_back(value(i));
-        else if (arg == "--plugin") a.plugins.push_back(value(i));
-        else if (arg == "--range") a.ranges.push_back(value(i));
-        else if (arg == "--lhs") a.lhs = parseCount(arg, value(i), 1000000);
-        else if (arg == "--seed") a.seed = parseCount(arg, value(i), 4294967295ULL);
-        else if (arg == "--jobs") a.jobs = static_cast<unsigned>(parseCount(arg, value(i), 1024));
-        else if (arg == "--shard") {
-            const std::string v = value(i);
-            const auto slash = v.find('/');
-            if (slash == std::string::npos) throw UsageError("--shard needs i/N, got '" + v + "'");
-            a.shardIndex = parseCount("--shard", v.substr(0, slash), 1000000);
-            a.shardCount = parseCount("--shard", v.substr(slash + 1), 1000000);
-            if (a.shardCount == 0 || a.shardIndex >= a.shardCount)
-                throw UsageError("--shard i/N needs 0 <= i < N, got '" + v + "'");
-            a.shardGiven = true;
-        }
-        else if (arg == "--mpi") a.mpi = true;
-        else if (arg == "--schematic") a.schematic = true;
-        else if (arg == "--schematic-at") { a.schematicAt = value(i); a.schematic = true; }
-        else if (arg == "--json") a.json = true;
-        else if (arg == "--quiet") a.quiet = true;
-        else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
-        else if (a.model.empty()) a.model = arg;
-        else if (a.command == "merge") a.positional.push_back(arg);
-        else throw UsageError("unexpected argument " + arg);
+/// `--end-time 0.3` means seconds (the option names its unit); a written
+/// unit ("300 ms") is passed on as is.
+std::string secondsIfBare(const std::string& text) {
+    const auto last = text.find_last_not_of(" \t");
+    if (last != std::string::npos && (std::isdigit(static_cast<unsigned char>(text[last])) || text[last] == '.'))
+        return text + " s";
+    return text;
+}
+
+/// What a command line may say: the commands with their options. Built
+/// anew for each parse; the options write into `a`.
+struct CommandLine {
+    CLI::App app{"milldyn: multibody simulation of the drive trains of grinding mills and crushers", "milldyn"};
+    std::map<std::string, CLI::App*> commands;
+    std::vector<std::string> sets, shard, lhs, seed, jobs, integrator, accuracy, endTime, scenario, preset;
+
+    /// One value per occurrence, every occurrence kept (a vector option
+    /// would otherwise swallow the model file after it).
+    static CLI::Option* repeatable(CLI::Option* o) {
+        return o->allow_extra_args(false)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     }
+
+    explicit CommandLine(Arguments& a) {
+        app.set_help_flag("-h,--help", "print this help");
+        app.require_subcommand(0, 1);
+        // As the hand parser before: an option given twice takes its last value.
+        app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+        auto command = [&](const std::string& name, const std::string& what) {
+            CLI::App* c = app.add_subcommand(name, what);
+            c->set_help_flag("-h,--help", "print the help of " + name);
+            repeatable(c->add_option("--plugin", a.plugins, "load element types from a plugin library (repeatable)"))
+                ->type_name("LIB.so");
+            commands[name] = c;
+            return c;
+        };
+        auto modelOptions = [&](CLI::App* c) {
+            c->add_option("model", a.model, "the model file")->type_name("MODEL.yaml");
+            repeatable(c->add_option("--set", sets, "override one value of the model file, with its unit (repeatable)"))
+                ->type_name("path=value");
+            repeatable(c->add_option("--scenario", scenario, "run the named scenario of scenarios:"))->type_name("NAME");
+            repeatable(c->add_option("--preset", preset, "apply the model's named preset"))->type_name("NAME");
+        };
+        CLI::App* run = command("run", "run the model's analysis and write its tables, summary.json and plots");
+        modelOptions(run);
+        run->add_option("--out", a.outDir, "output directory (default out)")->type_name("DIR");
+        repeatable(run->add_option("--integrator", integrator, "integrator (integrator.name)"))->type_name("NAME");
+        repeatable(run->add_option("--accuracy", accuracy, "relative accuracy (integrator.accuracy)"))->type_name("TOL");
+        repeatable(run->add_option("--end-time", endTime, "end time (scenario.end_time; seconds if no unit)"))->type_name("T");
+        run->add_flag("--quiet", a.quiet, "print nothing on success");
+        run->add_flag("--schematic", a.schematic, "2-D pictures of the machine (docs/schematic.md)");
+        run->add_option("--schematic-at", a.schematicAt, "times or carrier angles of the pictures")
+            ->type_name("t1,t2,...");
+        CLI::App* info = command("info", "bodies, DOF, elements, derived values, what was built and why");
+        modelOptions(info);
+        info->add_flag("--json", a.json, "the same as JSON (derived values at full precision)");
+        CLI::App* validate = command("validate", "compare the multibody model with the papers' oracles");
+        validate->add_option("--filter", a.filter, "only cases whose name contains TEXT")->type_name("TEXT");
+        validate->add_flag("--json", a.json, "rows as JSON");
+        validate->add_option("--report", a.reportDir, "write report.html and report.md into DIR")->type_name("DIR");
+        CLI::App* sweep = command("sweep", "run the model over a grid or a Latin hypercube of parameters");
+        modelOptions(sweep);
+        repeatable(sweep->add_option("--grid", a.grids, "axis of a full grid (repeatable)"))->type_name("path=a:b:n");
+        repeatable(sweep->add_option("--lhs", lhs, "Latin hypercube of N points"))->type_name("N");
+        repeatable(sweep->add_option("--range", a.ranges, "axis of the hypercube (repeatable)"))->type_name("path=a:b");
+        repeatable(sweep->add_option("--seed", seed, "seed of the hypercube"))->type_name("S");
+        repeatable(sweep->add_option("--jobs", jobs, "parallel runs (default: all cores)"))->type_name("N");
+        repeatable(sweep->add_option("--shard", shard, "run slice i of N"))->type_name("i/N");
+        sweep->add_flag("--mpi", a.mpi, "one slice per MPI rank");
+        sweep->add_option("--out", a.outDir, "output directory")->type_name("DIR");
+        sweep->add_flag("--quiet", a.quiet, "print nothing on success");
+        CLI::App* merge = command("merge", "join the parts of a sharded sweep");
+        merge->add_option("dirs", a.positional, "sweep directories")->type_name("DIR...");
+        merge->add_option("--out", a.outDir, "output directory")->type_name("DIR");
+        CLI::App* elements = command("elements", "every element type with its keys, units, defaults and ranges");
+        elements->add_option("type", a.topic, "only this element type")->type_name("TYPE");
+        elements->add_flag("--json", a.json, "as JSON");
+        CLI::App* analyses = command("analyses", "every analysis (scenario.analysis) with its keys");
+        analyses->add_option("kind", a.topic, "only this analysis")->type_name("KIND");
+        command("schema", "print the JSON Schema of the model format (for YAML editors)");
+        command("completion", "print a bash completion script");
+        CLI::App* help = command("help", "print the help of milldyn or of one command");
+        help->add_option("command", a.topic, "the command")->type_name("COMMAND");
+    }
+};
+
+/// The first line of a CLI11 message, without its trailing "Run with --help".
+std::string firstLine(const std::string& text) {
+    std::string line = text.substr(0, text.find('\n'));
+    return line;
+}
+
+Arguments parseArguments(const std::vector<std::string>& args, std::string* helpText) {
+    Arguments a;
+    if (args.empty()) throw UsageError("no command given (milldyn help lists the commands)");
+    CommandLine cl(a);
+    if (args[0].empty() || args[0][0] != '-') {
+        if (!cl.commands.count(args[0]))
+            throw UsageError("unknown command '" + args[0] + "'" +
+                             [&] {
+                                 std::vector<std::string> names;
+                                 for (const auto& c : cl.commands) names.push_back(c.first);
+                                 const std::string near = nearestName(args[0], names);
+                                 return near.empty() ? std::string() : " (did you mean '" + near + "'?)";
+                             }());
+    }
+    // An option of another command: say which command takes it.
+    if (cl.commands.count(args[0])) {
+        const CLI::App* given = cl.commands.at(args[0]);
+        for (std::size_t i = 1; i < args.size(); ++i) {
+            if (args[i].rfind("--", 0) != 0) continue;
+            const std::string option = args[i].substr(0, args[i].find('='));
+            if (given->get_option_no_throw(option)) continue;
+            std::string owners;
+            for (const auto& c : cl.commands)
+                if (c.second->get_option_no_throw(option)) owners += (owners.empty() ? "" : " or ") + c.first;
+            if (!owners.empty()) throw UsageError(option + " goes with " + owners);
+        }
+    }
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses from the back
+    try {
+        cl.app.parse(reversed);
+    } catch (const CLI::CallForHelp&) {
+        CLI::App* asked = nullptr;
+        for (const auto& c : cl.commands)
+            if (c.second->parsed()) asked = c.second;
+        *helpText = asked ? asked->help() : std::string(kUsage) + "\n" + cl.app.help();
+        a.command = "help";
+        return a;
+    } catch (const CLI::ParseError& e) {
+        throw UsageError(firstLine(e.what()));
+    }
+    for (const auto& c : cl.commands)
+        if (c.second->parsed()) a.command = c.first;
+    if (a.command.empty()) throw UsageError("no command given (milldyn help lists the commands)");
+    if (a.command == "help") {
+        if (a.topic.empty()) {
+            *helpText = std::string(kUsage) + "\n" + cl.app.help();
+        } else {
+            auto it = cl.commands.find(a.topic);
+            if (it == cl.commands.end()) throw UsageError("help: unknown command '" + a.topic + "'");
+            *helpText = it->second->help();
+        }
+        return a;
+    }
+    for (const auto& s : cl.sets) a.overrides.push_back(parseOverride(s));
+    // The shorthand options, in the order of the hand parser before them:
+    // they are settings like any --set (and win over the preset).
+    for (const auto& v : cl.integrator) a.overrides.push_back({"integrator.name", v});
+    for (const auto& v : cl.accuracy) a.overrides.push_back({"integrator.accuracy", v});
+    for (const auto& v : cl.endTime) a.overrides.push_back({"scenario.end_time", secondsIfBare(v)});
+    for (const auto& v : cl.scenario) a.overrides.push_back({"use_scenario", v});
+    for (const auto& v : cl.preset) a.overrides.push_back({"preset", v});
+    if (!cl.lhs.empty()) a.lhs = parseCount("--lhs", cl.lhs.back(), 1000000);
+    if (!cl.seed.empty()) a.seed = parseCount("--seed", cl.seed.back(), 4294967295ULL);
+    if (!cl.jobs.empty()) a.jobs = static_cast<unsigned>(parseCount("--jobs", cl.jobs.back(), 1024));
+    if (!cl.shard.empty()) {
+        const std::string v = cl.shard.back();
+        const auto slash = v.find('/');
+        if (slash == std::string::npos) throw UsageError("--shard needs i/N, got '" + v + "'");
+        a.shardIndex = parseCount("--shard", v.substr(0, slash), 1000000);
+        a.shardCount = parseCount("--shard", v.substr(slash + 1), 1000000);
+        if (a.shardCount == 0 || a.shardIndex >= a.shardCount)
+            throw UsageError("--shard i/N needs 0 <= i < N, got '" + v + "'");
+        a.shardGiven = true;
+    }
+    if (!a.schematicAt.empty()) a.schematic = true;
     if ((a.command == "run" || a.command == "info" || a.command == "sweep") && a.model.empty())
         throw UsageError(a.command + " needs a model file");
-    if (!a.reportDir.empty() && a.command != "validate") throw UsageError("--report goes with validate");
-    if (a.schematic && a.command != "run") throw UsageError("--schematic goes with run");
-    if (a.command == "merge") {
-        if (a.model.empty()) throw UsageError("merge needs sweep directories");
-        a.positional.insert(a.positional.begin(), a.model);
-    }
+    if (a.command == "merge" && a.positional.empty()) throw UsageError("merge needs sweep directories");
     return a;
 }
 
@@ -146,6 +272,9 @@ std::string describeValue(const std::string& name, double v, const std::string& 
 
 int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     const ModelSpec spec = readModel(a.model, a.overrides);
+    const std::string noGravity = gravityWarning(spec, defaultModelReader());
+    if (!noGravity.empty()) err << "milldyn: warning: " << noGravity << "\n";
+    for (const auto& n : spec.readNotes) err << "milldyn: note: " << n << "\n";
     ensureDirectory(a.outDir);
     const bool showProgress = !a.quiet && ::isatty(STDERR_FILENO);
     auto lastReport = std::chrono::steady_clock::now();
@@ -205,7 +334,39 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
 
 int commandInfo(const Arguments& a, std::ostream& out) {
     const ModelInfo info = describeModel(readModel(a.model, a.overrides));
+    if (a.json) {
+        // The same facts for programs; numbers at full precision (JSON
+        // doubles round-trip), derived values as in summary.json.
+        nlohmann::ordered_json j;
+        j["name"] = info.name;
+        j["file"] = info.file;
+        j["bodies"] = info.bodies;
+        j["mobilities"] = info.mobilities;
+        j["constraints"] = info.constraints;
+        j["forces"] = info.forces;
+        for (const auto& b : info.bodyList)
+            j["body"][b.name] = {{"parent", b.parent}, {"inertia", {{"value", b.inertia}, {"unit", "kg*m^2"}}}};
+        for (const auto& e : info.elements) j["elements"][e.name] = e.type;
+        j["scenario"] = info.scenario;
+        j["integrator"] = {{"name", info.integrator}, {"accuracy", info.accuracy}};
+        if (!info.fidelity.empty()) j["fidelity"] = info.fidelity;
+        j["warnings"] = info.warnings;
+        j["notes"] = info.notes;
+        j["derived"] = nlohmann::ordered_json::object();
+        for (const auto& d : info.derived)
+            j["derived"][d.name] = {{"value", d.value}, {"unit", d.unit}, {"description", d.doc}};
+        j["built"] = nlohmann::ordered_json::array();
+        for (const auto& n : info.built) j["built"].push_back({{"what", n.what}, {"why", n.why}});
+        j["not_built"] = nlohmann::ordered_json::array();
+        for (const auto& n : info.notBuilt) j["not_built"].push_back({{"what", n.what}, {"why", n.why}});
+        j["outputs"] = nlohmann::ordered_json::object();
+        for (const auto& p : info.outputs) j["outputs"][p.name] = p.unit;
+        out << j.dump(2) << "\n";
+        return 0;
+    }
     out << info.name << " (" << info.file << ")\n";
+    for (const auto& w : info.warnings) out << "  warning: " << w << "\n";
+    for (const auto& n : info.notes) out << "  note: " << n << "\n";
     out << "  bodies: " << info.bodies << ", mobilities (DOF): " << info.mobilities
         << ", constraints: " << info.constraints << ", forces: " << info.forces << "\n";
     for (const auto& b : info.bodyList)
@@ -318,28 +479,65 @@ int commandValidate(const Arguments& a, std::ostream& out, std::ostream& err) {
     return 0;
 }
 
+int commandElements(const Arguments& a, std::ostream& out) {
+    const ModelFileReader reader = defaultModelReader();
+    if (!a.json) {
+        out << formatElementReference(reader, a.topic);
+        return 0;
+    }
+    formatElementReference(reader, a.topic);  // the unknown-type diagnostic
+    const nlohmann::json schema = modelJsonSchema(reader);
+    nlohmann::json types = nlohmann::json::object();
+    for (const auto& variant : schema["properties"]["elements"]["items"]["allOf"]) {
+        const std::string type = variant["if"]["properties"]["type"]["const"];
+        if (a.topic.empty() || a.topic == type) types[type] = variant["then"];
+    }
+    out << types.dump(2) << "\n";
+    return 0;
+}
+
+int commandAnalyses(const Arguments& a, std::ostream& out) {
+    out << formatAnalysisReference(defaultModelReader(), a.topic);
+    return 0;
+}
+
+int commandSchema(std::ostream& out) {
+    out << modelJsonSchema(defaultModelReader()).dump(2) << "\n";
+    return 0;
+}
+
+int commandCompletion(std::ostream& out) {
+    out << bashCompletionScript(defaultModelReader());
+    return 0;
+}
+
 }  // namespace
 
 int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     try {
-        if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
-            out << kUsage;
-            return 0;
-        }
         if (!args.empty() && args[0] == "--version") {
             out << "milldyn " << milldynVersion() << "\n";
             return 0;
         }
-        const Arguments a = parseArguments(args);
+        std::string helpText;
+        const Arguments a = parseArguments(args, &helpText);
+        if (a.command == "help") {
+            out << helpText;
+            return 0;
+        }
         for (const auto& p : a.plugins) loadPlugin(p);
         if (a.command == "run") return commandRun(a, out, err);
         if (a.command == "info") return commandInfo(a, out);
         if (a.command == "validate") return commandValidate(a, out, err);
         if (a.command == "sweep") return commandSweep(a, out, err);
         if (a.command == "merge") return commandMerge(a, out);
+        if (a.command == "elements") return commandElements(a, out);
+        if (a.command == "analyses") return commandAnalyses(a, out);
+        if (a.command == "schema") return commandSchema(out);
+        if (a.command == "completion") return commandCompletion(out);
         throw UsageError("unknown command '" + a.command + "'");
     } catch (const UsageError& e) {
-        err << "milldyn: error: " << e.what() << "\n" << kUsage;
+        err << "milldyn: error: " << e.what() << " (milldyn help lists the commands and options)\n";
         return 2;
     } catch (const SpecError& e) {
         err << e.formatted() << "\n";

@@ -107,6 +107,7 @@ public:
         if (!spec.fidelity.empty()) keepSelectedFidelity(spec);
         if (root["integrator"]) readIntegrator(root["integrator"], spec.integrator);
         if (root["outputs"]) readOutputs(root["outputs"], spec.outputs);
+        spec.readNotes = m_readNotes;
         return spec;
     }
 
@@ -114,6 +115,13 @@ private:
     std::string m_file;
     const ModelFileReader& m_lookups;
     std::vector<std::pair<YAML::Node, SourceLocation>> m_overridden;  // node, "<--set path>"
+    mutable std::vector<std::string> m_readNotes;  // ModelSpec::readNotes
+
+    bool isOverridden(const YAML::Node& n) const {
+        for (const auto& o : m_overridden)
+            if (o.first.is(n)) return true;
+        return false;
+    }
     struct AddedKey {
         YAML::Node map;
         std::string key;
@@ -210,7 +218,7 @@ private:
     double readNumber(const YAML::Node& n, const std::string& key, const std::string& unit) const {
         const std::string text = scalar(n, key);
         try {
-            const double v = units::toSI(text, unit);
+            const double v = units::toSIRequiringUnit(text, unit);
             if (!std::isfinite(v)) throw error(n, key, "value is not finite");
             return v;
         } catch (const units::UnitError& e) {
@@ -598,6 +606,20 @@ private:
         if (!schema)
             throw error(kind, prefix + "analysis",
                         "unknown analysis '" + s.type + "'" + didYouMean(s.type, m_lookups.analysisKinds));
+        // `--set scenario.analysis=linearize` on a transient scenario: the
+        // keys the new analysis does not take are dropped, with a note.
+        if (isOverridden(kind)) {
+            std::vector<std::string> dropped;
+            for (auto it = n.begin(); it != n.end(); ++it) {
+                const std::string key = it->first.IsScalar() ? it->first.Scalar() : std::string();
+                if (key != "analysis" && !schema->find(key)) dropped.push_back(key);
+            }
+            YAML::Node map = n;
+            for (const auto& key : dropped) map.remove(key);
+            if (!dropped.empty())
+                m_readNotes.push_back(prefix + "analysis set to " + s.type + ": dropped " + joinWords(dropped) +
+                                      " (not keys of " + s.type + ")");
+        }
         readParams(n, *schema, prefix, {"analysis"}, spec, s);
         return s;
     }
@@ -907,12 +929,26 @@ private:
             std::vector<YAML::Node> next;
             for (YAML::Node& node : nodes) {
                 if (node.IsSequence()) {
+                    // `name@level`: only the copy of that fidelity level.
+                    const auto at = part.find('@');
+                    const std::string itemName = part.substr(0, at);
+                    const std::string level = at == std::string::npos ? "" : part.substr(at + 1);
+                    auto ofLevel = [&](const YAML::Node& item) {
+                        if (level.empty()) return true;
+                        const YAML::Node levels = item["fidelity"];
+                        if (!levels || !levels.IsSequence()) return false;
+                        for (const auto& l : levels)
+                            if (l.IsScalar() && l.Scalar() == level) return true;
+                        return false;
+                    };
                     for (std::size_t k = 0; k < node.size(); ++k)
                         if (node[k].IsMap() && node[k]["name"] && node[k]["name"].IsScalar() &&
-                            node[k]["name"].Scalar() == part) {
+                            node[k]["name"].Scalar() == itemName && ofLevel(node[k])) {
                             next.emplace_back();
                             next.back().reset(node[k]);  // operator= would copy into the tree
                         }
+                    if (next.empty() && !level.empty())
+                        throw fail("no list item named '" + itemName + "' of fidelity level '" + level + "'");
                     if (next.empty() && !part.empty() && part.size() < 9 &&
                         part.find_first_not_of("0123456789") == std::string::npos && std::stoul(part) < node.size()) {
                         next.emplace_back();
@@ -944,16 +980,49 @@ private:
             nodes.swap(next);  // element-wise operator= would write into the tree
         }
         const std::string& last = parts.back();
+        // A list value from the command line: `[0, -9.81 m/s^2, 0]`, items
+        // single values, each located at the --set.
+        YAML::Node list;
+        const auto first = valueText.find_first_not_of(" \t");
+        const bool listText = !valueNode && first != std::string::npos && valueText[first] == '[';
+        if (listText) {
+            try {
+                list = YAML::Load(valueText);
+            } catch (const YAML::Exception&) {
+                throw fail("expected a list [a, b, ...], got '" + valueText + "'");
+            }
+            if (!list.IsSequence()) throw fail("expected a list [a, b, ...], got '" + valueText + "'");
+            for (const auto& item : list)
+                if (!item.IsScalar()) throw fail("list items must be single values");
+        }
         for (YAML::Node& node : nodes) {
+            // One item of a list by its index: `gravity.1=-9.81 m/s^2`.
+            if (node.IsSequence() && !valueNode && !listText && !last.empty() && last.size() < 9 &&
+                last.find_first_not_of("0123456789") == std::string::npos) {
+                const std::size_t index = std::stoul(last);
+                if (index >= node.size())
+                    throw fail("item " + last + " of a list of " + std::to_string(node.size()) + " items");
+                if (!node[index].IsScalar()) throw fail("--set replaces single values or lists of them");
+                node[index] = valueText;  // a new scalar in place
+                m_overridden.emplace_back(node[index], at);
+                continue;
+            }
             if (!node.IsMap()) throw fail("the path must end at a key of a mapping");
-            if (!valueNode && node[last] && !node[last].IsScalar() && !node[last].IsNull())
-                throw fail("--set replaces single values only");
+            if (!valueNode && !listText && node[last] && !node[last].IsScalar() && !node[last].IsNull())
+                throw fail(node[last].IsSequence() ? "this key holds a list: give [a, b, ...] or set one item by "
+                                                     "its index (" + path + ".0=...)"
+                                                   : "--set replaces single values only");
             if (!node[last]) m_addedKeys.push_back({node, last, at});
             // Assigning into an existing node would write through YAML aliases
             // (&x / *x) into every other use of the value: detach it first.
             if (node[last]) node.remove(last);
             if (valueNode) {
                 node[last] = *valueNode;  // the same node: it keeps its file, line and column
+            } else if (listText) {
+                YAML::Node copy = YAML::Load(valueText);  // a node of its own for each place
+                node[last] = copy;
+                m_overridden.emplace_back(node[last], at);
+                for (const auto& item : node[last]) m_overridden.emplace_back(item, at);
             } else {
                 node[last] = valueText;
                 m_overridden.emplace_back(node[last], at);
@@ -963,6 +1032,19 @@ private:
 };
 
 }  // namespace
+
+std::string gravityWarning(const ModelSpec& spec, const ModelFileReader& reader) {
+    if (spec.gravity[0] != 0 || spec.gravity[1] != 0 || spec.gravity[2] != 0) return "";
+    std::vector<std::string> needing;
+    for (const auto& e : spec.elements) {
+        const ElementSchema* schema = reader.elementSchema(e.type);
+        if (schema && schema->needsGravity) needing.push_back(e.name + " (" + e.type + ")");
+    }
+    if (needing.empty()) return "";
+    return "the model has no gravity: but " + joinWords(needing) +
+           (needing.size() == 1 ? " is" : " are") +
+           " loaded by weight; add e.g. gravity: [0, -9.80665 m/s^2, 0] (without it their weight is 0)";
+}
 
 Override parseOverride(const std::string& text) {
     const auto eq = text.find('=');

@@ -28,6 +28,10 @@ struct Override {
     std::string value;
 };
 
+/// A model without `gravity:` whose elements are loaded by weight (their
+/// schema's needsGravity): one warning naming them, else "".
+std::string gravityWarning(const ModelSpec& spec, const ModelFileReader& reader);
+
 /// Parses "path=value"; throws SpecError located at the command line.
 Override parseOverride(const std::string& text);
 

@@ -94,6 +94,9 @@ struct ModelSpec {
     std::vector<std::string> presetNames;
     std::string preset;
     std::string presetWhy;
+    /// What reading changed on the user's behalf, one line each (the keys
+    /// `--set scenario.analysis=...` dropped): printed as notes.
+    std::vector<std::string> readNotes;
 
     const BodySpec* findBody(const std::string& name) const;
     const ElementSpec* findElement(const std::string& name) const;

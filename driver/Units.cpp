@@ -531,6 +531,33 @@ double toSI(std::string_view text, std::string_view expectedUnit) {
     return applyScale(v);
 }
 
+std::vector<std::string> suggestedUnits(std::string_view expectedUnit) {
+    const Dimension d = parseUnit(expectedUnit);
+    // Engineering units first where the SI unit is not what a drawing shows.
+    static const std::vector<std::pair<std::string, std::vector<std::string>>> usual = {
+        {"rad/s", {"rpm"}}, {"rad", {"deg"}}, {"m", {"mm"}}, {"W", {"kW"}}, {"N", {"kN"}}};
+    std::vector<std::string> out;
+    for (const auto& [unit, alternatives] : usual)
+        if (parseUnit(unit) == d) out = alternatives;
+    const Span e = trimmed(expectedUnit);
+    out.emplace_back(expectedUnit.substr(e.begin, e.end - e.begin));
+    return out;
+}
+
+double toSIRequiringUnit(std::string_view text, std::string_view expectedUnit) {
+    const double v = toSI(text, expectedUnit);
+    if (parseUnit(expectedUnit) == Dimension{}) return v;
+    const ParsedValue parsed = parseValue(text);
+    if (parsed.hasUnit || parsed.number == 0.0) return v;
+    const Span t = trimmed(text);
+    const std::string number(text.substr(t.begin, t.end - t.begin));
+    std::string hint;
+    const std::vector<std::string> units = suggestedUnits(expectedUnit);
+    for (std::size_t i = 0; i < units.size(); ++i)
+        hint += (i == 0 ? "" : (i + 1 == units.size() ? " or " : ", ")) + number + " " + units[i];
+    throw UnitError("a bare number needs a unit here (did you mean " + hint + "?)", t.end);
+}
+
 std::vector<std::string> knownUnitNames() {
     std::vector<std::string> names;
     for (const UnitDef& u : kUnits) {

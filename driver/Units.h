@@ -107,6 +107,17 @@ Quantity parseQuantity(std::string_view text);
 // coherent SI unit (scale != 1, e.g. "rpm" or "mm").
 double toSI(std::string_view text, std::string_view expectedUnit);
 
+// As toSI, but a bare number is refused where expectedUnit has a dimension
+// (a bare 0 stays accepted: it is 0 in every unit), with the units people
+// write for that quantity as the hint:
+//   "a bare number needs a unit here (did you mean 1490 rpm or 1490 rad/s?)".
+// A bare number keeps its meaning where expectedUnit is "1".
+double toSIRequiringUnit(std::string_view text, std::string_view expectedUnit);
+
+// Units people write for a quantity in the coherent SI unit `expectedUnit`,
+// most common first, ending with expectedUnit itself ("rad/s" -> rpm, rad/s).
+std::vector<std::string> suggestedUnits(std::string_view expectedUnit);
+
 // The unit names of the table above, in table order.
 std::vector<std::string> knownUnitNames();
 

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config
-  libsimbody-dev libeigen3-dev libyaml-cpp-dev nlohmann-json3-dev
+  libsimbody-dev libeigen3-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
   googletest libgtest-dev
   gnuplot-nox fonts-dejavu-core
   openmpi-bin libopenmpi-dev

@@ -14,9 +14,9 @@ trap 'rm -rf "$OUT"' EXIT
 
 "$BIN" run "$MODEL" --out "$OUT/turn" --quiet
 "$BIN" run "$MODEL" --set fidelity.level=elastic --scenario start --out "$OUT/start" --quiet
-"$BIN" sweep "$MODEL" --grid "scenario.carrier_speed=30:80:11" --jobs 1 --out "$OUT/omega" >/dev/null
+"$BIN" sweep "$MODEL" --grid "scenario.carrier_speed=30 rad/s:80 rad/s:11" --jobs 1 --out "$OUT/omega" >/dev/null
 "$BIN" sweep "$MODEL" --grid "elements.charge1.half_angle=30 deg:120 deg:10" --jobs 1 --out "$OUT/gamma" >/dev/null
-"$BIN" sweep "$MODEL" --grid "elements.belt1.fixed_sheave_radius=0.02:0.16:15" --jobs 1 --out "$OUT/c" >/dev/null
+"$BIN" sweep "$MODEL" --grid "elements.belt1.fixed_sheave_radius=0.02 m:0.16 m:15" --jobs 1 --out "$OUT/c" >/dev/null
 
 # Column numbers by name (gnuplot reads CSV by position).
 col() { head -1 "$1" | tr ',' '\n' | grep -n -x -F "$2" | cut -d: -f1; }

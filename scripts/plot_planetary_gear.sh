@@ -15,11 +15,11 @@ trap 'rm -rf "$OUT"' EXIT
 
 for size in 100x200 500x1000; do
   M=models/planetary_gear_$size.yaml
-  "$BIN" sweep "$M" --grid "elements.drive.acceleration_time=0.2:5:97" --jobs 1 --out "$OUT/tp_$size" >/dev/null
-  "$BIN" sweep "$M" --grid "elements.drive.acceleration_time=1000:1000:1" --jobs 1 --out "$OUT/tpinf_$size" >/dev/null
+  "$BIN" sweep "$M" --grid "elements.drive.acceleration_time=0.2 s:5 s:97" --jobs 1 --out "$OUT/tp_$size" >/dev/null
+  "$BIN" sweep "$M" --grid "elements.drive.acceleration_time=1000 s:1000 s:1" --jobs 1 --out "$OUT/tpinf_$size" >/dev/null
   # The start, with journal friction (extrapolated loads, accuracy 1e-8:
   # friction torques within 0.1 %, docs/planetary_gear.md).
-  "$BIN" run "$M" --scenario start --set outputs.sample_interval=0.01 \
+  "$BIN" run "$M" --scenario start --set outputs.sample_interval=0.01s \
     --out "$OUT/start_$size" --quiet
   "$BIN" run "$M" --scenario turn --set fidelity.level=held_charge --set elements.charge1.lag=45deg \
     --set elements.charge2.lag=45deg --out "$OUT/turn45_$size" --quiet
@@ -28,7 +28,7 @@ for size in 100x200 500x1000; do
 done
 
 col() { head -1 "$1" | tr ',' '\n' | grep -n -x -F "$2" | cut -d: -f1; }
-TP=$(col "$OUT/tp_100x200/sweep.csv" "elements.drive.acceleration_time[SI]")
+TP=$(col "$OUT/tp_100x200/sweep.csv" "elements.drive.acceleration_time[s]")
 MT=$(col "$OUT/tp_100x200/sweep.csv" "drive.torque.first[N*m]")
 MINF_S=$(tail -1 "$OUT/tpinf_100x200/sweep.csv" | cut -d, -f"$MT")
 MINF_L=$(tail -1 "$OUT/tpinf_500x1000/sweep.csv" | cut -d, -f"$MT")

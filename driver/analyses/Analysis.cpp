@@ -355,13 +355,21 @@ void addDefaultPlots(AnalysisResult& result) {
     if (!loads.empty()) result.plots.push_back({"bearing_loads", loads});
 }
 
+std::string speedColumnName(const Scene& scene, const SceneBody& body) {
+    const SimTK::MobilizedBodyIndex parent = body.mobod.getParentMobilizedBody().getMobilizedBodyIndex();
+    if (parent == SimTK::GroundIndex) return body.name + ".speed";
+    for (const auto& other : scene.bodies())
+        if (other.mobod.getMobilizedBodyIndex() == parent) return body.name + ".speed_rel_" + other.name;
+    return body.name + ".speed_rel_parent";
+}
+
 SampleTable::SampleTable(const Scene& scene, AnalysisResult& result) : m_scene(scene), m_result(result) {
     result.columnNames = {"time"};
     result.columnUnits = {"s"};
     for (const auto& b : scene.bodies()) {
         result.columnNames.push_back(b.name + ".angle");
         result.columnUnits.push_back("rad");
-        result.columnNames.push_back(b.name + ".speed");
+        result.columnNames.push_back(speedColumnName(scene, b));
         result.columnUnits.push_back("rad/s");
     }
     for (const auto& p : scene.probes()) {

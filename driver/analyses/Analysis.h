@@ -129,6 +129,11 @@ void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK
 /// Adds the usual plots: every speed column, every torque column.
 void addDefaultPlots(AnalysisResult& result);
 
+/// The table column of a body's pin speed: `NAME.speed` on ground, else
+/// `NAME.speed_rel_PARENT` (a drum's speed relative to its carrier is not
+/// an absolute speed: issue 20 item 10).
+std::string speedColumnName(const Scene& scene, const SceneBody& body);
+
 /// Records samples of a scene into an AnalysisResult's table.
 class SampleTable {
 public:

@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <complex>
+#include <sstream>
 
 namespace milldyn {
 namespace {
@@ -112,11 +113,47 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     // Time-simulation checks: the same model with only harmonic k of the
     // load, at frequency P, run until transients decay, then fitted.
     const auto& checks = sc.numbers("check_frequencies");
-    double slowest = 0;  // smallest nonzero decay rate
+    // The length of each check comes from the damping: the slowest mode
+    // must decay by e^-14 before the fit. A mode that does not decay (or so
+    // slowly that settling takes more than kMaxSettlePeriods periods) is
+    // refused with the reason, unless settle_time says how long to run.
+    double slowest = 0;  // smallest decay rate of a vibrating or decaying mode
+    Complex slowestMode = 0;
+    bool undamped = false;
+    const double largest = lm.eigenvalues.size() > 0 ? lm.eigenvalues.cwiseAbs().maxCoeff() : 0.0;
     for (Eigen::Index i = 0; i < lm.eigenvalues.size(); ++i) {
-        const double rate = -lm.eigenvalues[i].real();
-        if (std::abs(lm.eigenvalues[i]) > 1e-9 * lm.eigenvalues.cwiseAbs().maxCoeff() && rate > 0)
-            slowest = slowest == 0 ? rate : std::min(slowest, rate);
+        const Complex lambda = lm.eigenvalues[i];
+        if (!(std::abs(lambda) > 1e-9 * largest)) continue;  // a rigid-body mode: no transient to wait for
+        const double rate = -lambda.real();
+        if (rate <= 1e-12 * std::abs(lambda)) {
+            undamped = true;
+            slowestMode = lambda;
+        } else if (slowest == 0 || rate < slowest) {
+            slowest = rate;
+            if (!undamped) slowestMode = lambda;
+        }
+    }
+    constexpr double kMaxSettlePeriods = 20000;  // ~1e6 steps at 50 a period: minutes, not hours
+    if (!checks.empty() && !(sc.number("settle_time") > 0)) {
+        std::ostringstream mode;
+        mode << slowestMode.real() << (slowestMode.imag() < 0 ? " - " : " + ") << std::abs(slowestMode.imag())
+             << "i 1/s";
+        if (undamped)
+            throw sc.error("check_frequencies",
+                           "the time-simulation check cannot settle: the mode with eigenvalue " + mode.str() +
+                               " is undamped, so its transient never decays and the fit would measure it too; "
+                               "add damping, or give settle_time to run that long anyway");
+        for (const double P : checks) {
+            const double settlePeriods = 14.0 / slowest / (2 * M_PI / P);
+            if (settlePeriods > kMaxSettlePeriods) {
+                std::ostringstream why;
+                why << "the time-simulation check at " << P << " rad/s would run " << 14.0 / slowest
+                    << " s (" << settlePeriods << " periods, more than " << kMaxSettlePeriods
+                    << "): the slowest mode, eigenvalue " << mode.str() << ", decays at " << slowest
+                    << " 1/s; give settle_time, or check at a lower frequency";
+                throw sc.error("check_frequencies", why.str());
+            }
+        }
     }
     DataTable table{"time_checks",
                     {"frequency", "output", "linear_amplitude", "simulated_amplitude", "amplitude_rel_diff",
@@ -140,7 +177,7 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
         const double period = 2 * M_PI / P;
         const double settle = sc.number("settle_time") > 0 ? sc.number("settle_time")
                               : slowest > 0                ? 14.0 / slowest
-                                                           : 20 * period;
+                                                           : 20 * period;  // every mode rigid: nothing to wait for
         const double fitTime = sc.number("check_periods") * period;
         // The settle time is rounded up to whole periods, so the fit spans whole periods.
         const double tFit = std::ceil(settle / period) * period;

@@ -109,7 +109,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
                                       "largest |" + name + "| of the run (on its from-shaft)"});
         }
     if (start == "rest" && omega > 0) {
-        const std::size_t col = table.column(speedBody.name + ".speed");
+        const std::size_t col = table.column(speedColumnName(*scene, speedBody));
         for (const auto& row : result.rows)
             if (row[col] >= 0.95 * omega) {
                 result.results.push_back({"start_time", row[0], "s",

@@ -4,7 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -129,6 +131,32 @@ bool renderGnuplotPng(const std::string& png, const std::string& commands, int w
     return true;
 }
 
+std::vector<std::vector<std::size_t>> plotPanels(const AnalysisResult& result, const std::vector<std::size_t>& columns) {
+    std::vector<double> peak(columns.size(), 0.0);
+    for (std::size_t k = 0; k < columns.size(); ++k)
+        for (const auto& row : result.rows)
+            if (columns[k] < row.size() && std::isfinite(row[columns[k]]))
+                peak[k] = std::max(peak[k], std::abs(row[columns[k]]));
+    std::vector<std::vector<std::size_t>> panels;
+    std::vector<std::pair<double, double>> range;  // smallest and largest peak of each panel
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        bool placed = false;
+        for (std::size_t p = 0; p < panels.size() && !placed; ++p) {
+            const double lo = std::min(range[p].first, peak[k]), hi = std::max(range[p].second, peak[k]);
+            if (peak[k] == 0 || range[p].second == 0 || hi <= 10 * lo) {
+                panels[p].push_back(columns[k]);
+                if (peak[k] > 0) range[p] = range[p].second == 0 ? std::make_pair(peak[k], peak[k]) : std::make_pair(lo, hi);
+                placed = true;
+            }
+        }
+        if (!placed) {
+            panels.push_back({columns[k]});
+            range.emplace_back(peak[k], peak[k]);
+        }
+    }
+    return panels;
+}
+
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning) {
     std::vector<std::string> written;
@@ -139,19 +167,29 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
     for (const auto& plot : result.plots) {
         if (plot.second.empty()) continue;
         const std::string png = dir + "/" + plot.first + ".png";
+        // One panel per group of like magnitudes, each with its own axis.
+        const auto panels = plotPanels(result, plot.second);
         std::ostringstream script;
         script << "set datafile separator ','\nset key outside right\nset grid\n"
-               << (result.plotXLabel.find("frequency") != std::string::npos ? "set logscale x\n" : "")
-               << "set xlabel " << quoteForGnuplot(result.plotXLabel) << "\nset ylabel " << quoteForGnuplot(plot.first + " [" +
-                                                                            result.columnUnits[plot.second[0]] + "]")
-               << "\nset title " << quoteForGnuplot(plot.first) << "\nplot ";
-        for (std::size_t k = 0; k < plot.second.size(); ++k) {
-            const std::size_t col = plot.second[k];
-            script << (k ? ", " : "") << quoteForGnuplot(csvPath) << " every ::1 using 1:" << col + 1
-                   << " with lines lw 1.5 title " << quoteForGnuplot(result.columnNames[col]);
+               << (result.plotXLabel.find("frequency") != std::string::npos ? "set logscale x\n" : "");
+        if (panels.size() > 1)
+            script << "set multiplot layout " << panels.size() << ",1 title " << quoteForGnuplot(plot.first) << "\n";
+        for (std::size_t p = 0; p < panels.size(); ++p) {
+            const bool last = p + 1 == panels.size();
+            script << "set xlabel " << quoteForGnuplot(last ? result.plotXLabel : "") << "\nset ylabel "
+                   << quoteForGnuplot(plot.first + " [" + result.columnUnits[panels[p][0]] + "]") << "\n";
+            if (panels.size() == 1) script << "set title " << quoteForGnuplot(plot.first) << "\n";
+            script << "plot ";
+            for (std::size_t k = 0; k < panels[p].size(); ++k) {
+                const std::size_t col = panels[p][k];
+                script << (k ? ", " : "") << quoteForGnuplot(csvPath) << " every ::1 using 1:" << col + 1
+                       << " with lines lw 1.5 title " << quoteForGnuplot(result.columnNames[col]);
+            }
+            script << "\n";
         }
-        script << "\n";
-        if (!renderGnuplotPng(png, script.str(), 1000, 560)) {
+        if (panels.size() > 1) script << "unset multiplot\n";
+        const int height = panels.size() > 1 ? static_cast<int>(300 * panels.size()) + 60 : 560;
+        if (!renderGnuplotPng(png, script.str(), 1000, height)) {
             warning = "gnuplot failed for plot " + plot.first;
             continue;
         }

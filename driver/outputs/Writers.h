@@ -33,6 +33,13 @@ std::vector<std::string> writeResultFiles(const std::string& dir, const ModelSpe
 std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& result, const RunInfo& info);
 /// Writes one PNG per plot of the result with gnuplot, reading `csvPath`.
 /// Returns the files written; a missing gnuplot yields none and a warning.
+/// The panels of one plot: its columns grouped so that within a panel the
+/// largest |value| of each column is within a factor 10 of the others
+/// (a 1.9 rad/s mill and a 157 rad/s motor get a panel and an axis each),
+/// in the plot's order of first appearance. Columns that stay 0 join the
+/// first panel.
+std::vector<std::vector<std::size_t>> plotPanels(const AnalysisResult& result, const std::vector<std::size_t>& columns);
+
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning);
 

@@ -4,12 +4,28 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace milldyn {
 
 using namespace SimTK;
+
+namespace {
+
+/// The journals of each scene (keyed by its shared reaction cache), so one
+/// can compute the frictionless reaction with all of them off. Journals
+/// leave on destruction; sweeps build scenes on several threads.
+std::mutex g_journalsMutex;
+std::map<const MobilizerReactions*, std::vector<const JournalFriction*>>& journalsOfScene() {
+    static std::map<const MobilizerReactions*, std::vector<const JournalFriction*>> all;
+    return all;
+}
+
+}  // namespace
 
 JournalFriction::JournalFriction(const SimbodyMatterSubsystem& matter, const MobilizerReactions& reactions,
                                  const MobilizedBody& body, const JournalFrictionParams& p)
@@ -18,12 +34,44 @@ JournalFriction::JournalFriction(const SimbodyMatterSubsystem& matter, const Mob
     if (!(p.frictionCoefficient >= 0 && p.frictionCoefficient <= 1)) bad("friction_coefficient must be in [0, 1]");
     if (!(p.journalDiameter >= 0) || !std::isfinite(p.journalDiameter)) bad("journal_diameter must be >= 0 m");
     if (!(p.smoothingSpeed > 0) || !std::isfinite(p.smoothingSpeed)) bad("smoothing_speed must be > 0 rad/s");
+    std::lock_guard<std::mutex> lock(g_journalsMutex);
+    journalsOfScene()[&m_reactions].push_back(this);
+}
+
+JournalFriction::~JournalFriction() {
+    std::lock_guard<std::mutex> lock(g_journalsMutex);
+    auto it = journalsOfScene().find(&m_reactions);
+    if (it == journalsOfScene().end()) return;
+    auto& list = it->second;
+    list.erase(std::remove(list.begin(), list.end(), this), list.end());
+    if (list.empty()) journalsOfScene().erase(it);
+}
+
+std::pair<double, double> JournalFriction::calcFrictionless(const State& s) const {
+    std::vector<const JournalFriction*> journals;
+    {
+        std::lock_guard<std::mutex> lock(g_journalsMutex);
+        journals = journalsOfScene()[&m_reactions];
+    }
+    State off = s;
+    for (const JournalFriction* j : journals)
+        Value<Vec4>::updDowncast(j->m_matter.updDiscreteVariable(off, j->m_keptLoad)) = Vec4(0);
+    m_matter.getSystem().realize(off, Stage::Acceleration);
+    return {calcReaction(off), m_body.getOneUDot(off, MobilizerUIndex(0))};
+}
+
+double JournalFriction::keepDirection(State& s, double direction) const {
+    double& kept = Value<double>::updDowncast(m_matter.updDiscreteVariable(s, m_direction));
+    const double changed = kept == direction ? 0.0 : 1.0;
+    kept = direction;
+    return changed;
 }
 
 void JournalFriction::realizeTopology(State& s) const {
     // [R_n, t_n, R_(n-1), t_(n-1)]: the reactions at the last two step ends.
     m_keptLoad = m_matter.allocateAutoUpdateDiscreteVariable(s, Stage::Dynamics, new Value<Vec4>(Vec4(0)),
                                                              Stage::Acceleration);
+    m_direction = m_matter.allocateDiscreteVariable(s, Stage::Dynamics, new Value<double>(0.0));
 }
 
 double JournalFriction::calcReaction(const State& s) const {
@@ -47,7 +95,11 @@ double JournalFriction::calcFrictionTorque(double load, const JournalFrictionPar
 }
 
 double JournalFriction::calcTorque(const State& s) const {
-    return calcFrictionTorque(getLoad(s), m_p, m_body.getOneU(s, MobilizerUIndex(0)));
+    const double u = m_body.getOneU(s, MobilizerUIndex(0));
+    if (m_p.breakaway && u == 0)  // at rest: full friction against the kept breakaway direction
+        return getLoad(s) * m_p.frictionCoefficient * m_p.journalDiameter / 2 *
+               Value<double>::downcast(m_matter.getDiscreteVariable(s, m_direction));
+    return calcFrictionTorque(getLoad(s), m_p, u);
 }
 
 double JournalFriction::calcPower(const State& s) const {
@@ -69,8 +121,10 @@ void JournalFriction::realizeAcceleration(const State& s) const {
     // Keep this step's reaction for the next (swapped in by the integrator
     // when the step is accepted).
     const Vec4& h = history(s);
+    // First order: the frictionless reaction needs a realization of its
+    // own, so it is refreshed between steps (eachStep), not here.
     Value<Vec4>::updDowncast(m_matter.updDiscreteVarUpdateValue(s, m_keptLoad)) =
-        Vec4(calcReaction(s), s.getTime(), h[0], h[1]);
+        m_p.coupling == ReactionCoupling::FirstOrder ? h : Vec4(calcReaction(s), s.getTime(), h[0], h[1]);
     m_matter.markDiscreteVarUpdateValueRealized(s, m_keptLoad);
 }
 
@@ -85,7 +139,9 @@ void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
     const std::string& coupling = spec.text("reaction");
     p.coupling = coupling == "iterated"       ? ReactionCoupling::Iterated
                  : coupling == "extrapolated" ? ReactionCoupling::Extrapolated
+                 : coupling == "first_order"  ? ReactionCoupling::FirstOrder
                                               : ReactionCoupling::Lagged;
+    p.breakaway = spec.text("at_rest") == "breakaway";
     auto* impl = new JournalFriction(scene.matter(), scene.mobilizerReactions(), body->mobod, p);
     Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
@@ -97,9 +153,19 @@ void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
                     [impl](const State& s) { return impl->calcReaction(s); }});
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
                          [impl](const State& s) { return impl->calcPower(s); }});
-    scene.addLaggedValue({spec.name + ".load", p.coupling == ReactionCoupling::Iterated,
-                          [impl](const State& s) { return impl->calcReaction(s); },
+    const bool firstOrder = p.coupling == ReactionCoupling::FirstOrder;
+    scene.addLaggedValue({spec.name + ".load", p.coupling == ReactionCoupling::Iterated || firstOrder,
+                          [impl, firstOrder](const State& s) {
+                              return firstOrder ? impl->calcFrictionless(s).first : impl->calcReaction(s);
+                          },
                           [impl](State& s, double load) { return impl->keepLoad(s, load); }});
+    if (p.breakaway)
+        scene.addLaggedValue({spec.name + ".breakaway_direction", false,
+                              [impl](const State& s) {
+                                  const double a = impl->calcFrictionless(s).second;
+                                  return a > 0 ? 1.0 : a < 0 ? -1.0 : 0.0;
+                              },
+                              [impl](State& s, double d) { return impl->keepDirection(s, d); }});
     scene.note("force " + spec.name + " (JournalFriction, " + spec.text("reaction") + ")",
                "journal of " + body->name + " on its parent, load from Simbody's reaction");
 }
@@ -110,15 +176,20 @@ void registerJournalFriction(ElementRegistry& registry) {
     using P = ParamSchema;
     ElementSchema s;
     s.type = "JournalFriction";
+    s.needsGravity = true;
     s.doc = "Journal-bearing friction M = |R| f d/2 from the reaction the model computes (seed 000 eq 21).";
     s.params = {
         P::body("body", "body whose pin (to its parent) is the journal"),
         P::quantity("friction_coefficient", "1", "f").atLeast(0).atMost(1),
         P::quantity("journal_diameter", "m", "d").atLeast(0),
         P::quantity("smoothing_speed", "rad/s", "ω_s of tanh(u/ω_s) near zero relative speed").optional(1e-3).above(0),
-        P::choice("reaction", {"lagged", "iterated", "extrapolated"},
-                  "reaction of the last step, made consistent each step, or extrapolated from the last two")
+        P::choice("reaction", {"lagged", "iterated", "extrapolated", "first_order"},
+                  "reaction of the last step, made consistent each step, extrapolated from the last two, or "
+                  "first_order: the frictionless reaction (seed 000 eq 21, the paper's way)")
             .optional(std::string("lagged")),
+        P::choice("at_rest", {"smooth", "breakaway"},
+                  "at zero relative speed: tanh(0) = 0, or full friction against the motion beginning")
+            .optional(std::string("smooth")),
     };
     registry.add({std::move(s), buildJournalFriction});
 }

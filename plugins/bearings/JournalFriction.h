@@ -15,6 +15,7 @@ enum class ReactionCoupling {
     Lagged,    ///< the reaction at the end of the last step, computed with that step's friction
     Iterated,  ///< at every step's start, iterated until load and reaction agree
     Extrapolated,  ///< linear in time through the reactions at the last two step ends
+    FirstOrder,    ///< the reaction with every journal's friction off (seed 000 eq 21, the paper's way)
 };
 
 struct JournalFrictionParams {
@@ -22,6 +23,11 @@ struct JournalFrictionParams {
     double journalDiameter = 0;      ///< d [m] >= 0
     double smoothingSpeed = 1e-3;    ///< ω_s [rad/s] > 0: tanh width at zero relative speed
     ReactionCoupling coupling = ReactionCoupling::Lagged;
+    /// At exactly zero relative speed (a start instant), full friction
+    /// opposing the relative acceleration the journal would have without
+    /// friction (from the applied torques or the prescribed motion), instead
+    /// of tanh(0) = 0.
+    bool breakaway = false;
 };
 
 /**
@@ -49,6 +55,16 @@ struct JournalFrictionParams {
  *   last two step ends, so it changes continuously within a step and the
  *   integrator's error control sees it; the error is second order in the
  *   step instead of first (docs/planetary_gear.md measures all three).
+ * - FirstOrder: the load is the reaction of the same state with every
+ *   journal's friction off (their kept loads set to 0 in a copy of the
+ *   state, realized to Acceleration), refreshed after every step and at
+ *   every kinetostatic instant: friction changes no journal's load, as in
+ *   seed 000 eq (21), where the loads are those of the frictionless
+ *   mechanism. It differs from the consistent loads at second order in f.
+ * Breakaway (`at_rest: breakaway`): at u = 0 exactly, tanh(u/ω_s) is replaced
+ * by the sign of the frictionless relative acceleration (kept with the
+ * load), so a start instant carries the friction that resists the motion
+ * beginning (seed 000 eq 20) instead of none.
  * A nested realization inside calcForce is not possible: Simbody's force
  * subsystem keeps the state it is realizing in a shared task object, so a
  * realization of another State of the same System from inside a force
@@ -77,6 +93,14 @@ public:
     /// Sets the kept reaction to `load` [N] (the current reaction, read by
     /// the caller from a realized state); returns the relative change.
     double keepLoad(SimTK::State& s, double load) const;
+    /// The reaction [N] and relative acceleration [rad/s^2] this journal
+    /// would have in `s` with every journal of the scene frictionless
+    /// (realizes a copy of `s`; `s` must not be in the middle of a realization).
+    std::pair<double, double> calcFrictionless(const SimTK::State& s) const;
+    /// The direction of breakaway friction (sign of the frictionless
+    /// relative acceleration), kept like the load; returns 1 if it changed.
+    double keepDirection(SimTK::State& s, double direction) const;
+    ~JournalFriction() override;
 
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                    SimTK::Vector& mobilityForces) const override;
@@ -90,6 +114,7 @@ private:
     SimTK::MobilizedBody m_body;
     JournalFrictionParams m_p;
     mutable SimTK::DiscreteVariableIndex m_keptLoad;
+    mutable SimTK::DiscreteVariableIndex m_direction;  ///< breakaway: −1, 0, +1
 
     const SimTK::Vec4& history(const SimTK::State& s) const;
 };

@@ -459,6 +459,7 @@ void registerSegmentCharge(ElementRegistry& registry) {
     using P = ParamSchema;
     ElementSchema s;
     s.type = "SegmentCharge";
+    s.needsGravity = true;
     s.doc = "Grinding charge as a circular segment in a drum (rigid with it, held at a lag, dragged, or a torque arm).";
     s.params = {
         P::body("drum", "drum (on a pin on its carrier, or on ground) holding the charge"),

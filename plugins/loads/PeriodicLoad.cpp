@@ -24,9 +24,13 @@ PeriodicLoad::PeriodicLoad(const SimTK::GeneralForceSubsystem& forces, std::vect
           p.fundamentalFrequency, "must be finite and > 0");
     check(std::isfinite(p.smoothingSpeed) && p.smoothingSpeed > 0, "smoothing_speed", p.smoothingSpeed,
           "must be finite and > 0");
+    check(p.phases.empty() || static_cast<int>(p.phases.size()) == p.rows, "phases",
+          static_cast<double>(p.phases.size()), "give one phase per row");
+    for (double phi : p.phases) check(std::isfinite(phi), "phases", phi, "each must be finite");
 }
 
 double PeriodicLoad::rowPhase(int row) const {
+    if (!m_params.phases.empty()) return m_params.phases[row];
     return m_params.staggered ? 2 * SimTK::Pi * row / m_params.rows : 0.0;
 }
 
@@ -90,6 +94,7 @@ void buildPeriodicLoad(const ElementSpec& spec, Scene& scene) {
     p.amplitudes = spec.numbers("amplitudes");
     p.fundamentalFrequency = spec.number("fundamental_frequency");
     p.staggered = spec.text("arrangement") == "staggered";
+    if (spec.has("phases")) p.phases = spec.numbers("phases");
     p.smoothingSpeed = spec.number("smoothing_speed");
     auto* impl = new PeriodicLoad(scene.forces(), bodies, p);
     SimTK::Force::Custom force(scene.forces(), impl);
@@ -102,7 +107,7 @@ void buildPeriodicLoad(const ElementSpec& spec, Scene& scene) {
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load,
                          [impl](const SimTK::State& s) { return impl->calcAbsorbedPower(s); }});
     scene.note("force " + spec.name + " (PeriodicLoad, " + std::to_string(p.rows) + " rows, " +
-                   spec.text("arrangement") + ")",
+                   (p.phases.empty() ? spec.text("arrangement") : std::string("phases as listed")) + ")",
                "loads " + std::to_string(bodies.size()) + " bod" + (bodies.size() == 1 ? "y" : "ies"));
 }
 
@@ -121,6 +126,9 @@ void registerPeriodicLoad(ElementRegistry& registry) {
         P::quantity("fundamental_frequency", "rad/s", "P_1; harmonic k is at k·P_1").above(0),
         P::choice("arrangement", {"in_phase", "staggered"}, "row phases: all equal, or evenly staggered")
             .optional("staggered"),
+        P::quantityList("phases", "rad", 1, 1000,
+                        "fundamental phase of each row φ_r, one per row (any stagger); replaces arrangement")
+            .optional(std::string()),
         P::quantity("smoothing_speed", "rad/s", "regularisation width of the mean at standstill")
             .optional(0.01).above(0),
     };
@@ -131,6 +139,13 @@ void registerPeriodicLoad(ElementRegistry& registry) {
         if (n != 1 && static_cast<double>(n) != rows)
             throw e.error("bodies", "give one body per row (" + std::to_string(static_cast<int>(rows)) +
                                         ") or one body for all rows, got " + std::to_string(n));
+        if (!e.has("phases")) return;
+        const ParamValue& phases = e.params.at("phases");
+        if (static_cast<double>(phases.numbers.size()) != rows)
+            throw e.error("phases", "give one phase per row (" + std::to_string(static_cast<int>(rows)) + "), got " +
+                                        std::to_string(phases.numbers.size()));
+        if (e.has("arrangement"))
+            throw e.error("phases", "give phases or arrangement, not both");
     };
     registry.add({std::move(s), buildPeriodicLoad});
 }

@@ -21,6 +21,9 @@ struct PeriodicLoadParams {
     /// true: rows evenly staggered over one period of the fundamental
     /// (φ_r = 2πr/n, eq 13); false: all rows in phase.
     bool staggered = true;
+    /// Fundamental phase of each row φ_r [rad] (any stagger); when not
+    /// empty it holds one entry per row and replaces `staggered`.
+    std::vector<double> phases;
     /// Width ωs of the regularisation of the mean near standstill [rad/s], > 0.
     double smoothingSpeed = 0.01;
 };
@@ -30,7 +33,7 @@ struct PeriodicLoadParams {
  *
  * <pre>
  *   row r = 0..n−1:  M_r(t) = M̄·tanh(ω/ωs) + Σ_k b_k·sin(k·(P_1·t + φ_r))   (eqs 13, 27)
- *   φ_r = 2π·r/n (staggered) or 0 (in phase)
+ *   φ_r = 2π·r/n (staggered), 0 (in phase), or as listed (`phases:`, one per row)
  *   body j gets −Σ_{rows r on j} M_r(t)
  *   rows on bodies: n bodies → one row each; one body → all n rows on it
  * </pre>

@@ -131,6 +131,9 @@ struct ElementSchema {
     /// Output only (JointReaction): it changes nothing in the motion, so a
     /// model whose `outputs.columns` names none of its outputs skips it.
     bool outputOnly = false;
+    /// Loaded by weight (a charge, a journal): a model without `gravity:`
+    /// gets a warning naming it (issue 20 item 8).
+    bool needsGravity = false;
 
     const ParamSchema* find(const std::string& key) const;
 };

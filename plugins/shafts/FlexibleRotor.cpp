@@ -262,6 +262,11 @@ void buildFlexibleRotor(const ElementSpec& spec, Scene& scene) {
     const SceneBody drive = *scene.findBody(spec.text("drive_body"));
     FlexibleRotorParams p;
     p.shaftDiameter = spec.number("shaft_diameter") > 0 ? spec.number("shaft_diameter") : fittedDiameter(spec);
+    scene.addDerivedValue({spec.name + ".shaft_diameter", p.shaftDiameter, "m",
+                           spec.number("shaft_diameter") > 0
+                               ? "shaft diameter d as given"
+                               : "shaft diameter d from seed 001 eq (2), d = k1 L^3 - k2 L^2 + k3 L + k4 (Table 1, "
+                                 "resolved reading)"});
     p.youngsModulus = spec.number("youngs_modulus");
     p.shearModulus = spec.number("shear_modulus");
     p.shaftDensity = spec.number("shaft_density");

@@ -291,6 +291,25 @@ TEST(ModelFileErrors, ZeroInertiaIsRefused) {
     expectError(e, 5, 14, "motor_shaft.inertia", "must be > 0 kg*m^2");
 }
 
+TEST(ModelFileErrors, BareNumberOnADimensionalKeyIsRefusedWithAUnitHint) {
+    // issue 20 item 7: `rated_speed: 1490` beside `synchronous_speed: 1500 rpm`
+    // was taken as 1490 rad/s (a 14,300 rpm motor).
+    const SpecError e = readError(replaced("rated_speed: 1446 rpm", "rated_speed: 1490"));
+    expectError(e, 17, 22, "motor.rated_speed", "a bare number needs a unit here (did you mean 1490 rpm or 1490 rad/s?)");
+}
+
+TEST(ModelFileErrors, BareNumberThroughSetIsRefusedToo) {
+    const SpecError e = readError(kBase, {{"elements.belt.stiffness", "600"}});
+    EXPECT_EQ(e.where().file, "<--set elements.belt.stiffness>");
+    EXPECT_TRUE(contains(e.what(), "did you mean 600 N*m/rad?")) << e.what();
+}
+
+TEST(ModelFileRead, BareZeroAndDimensionlessNumbersNeedNoUnit) {
+    const ModelSpec m = read(kBase, {{"elements.belt.stiffness", "0"}, {"integrator.accuracy", "1e-7"}});
+    EXPECT_EQ(m.findElement("belt")->params.at("stiffness").number, 0.0);
+    EXPECT_EQ(m.integrator.accuracy, 1e-7);
+}
+
 TEST(ModelFileErrors, NegativeInertiaIsRefused) {
     const SpecError e = readError(replaced("190.7e-4 kg*m^2", "-190.7e-4 kg*m^2"));
     expectError(e, 5, 14, "motor_shaft.inertia", "must be > 0 kg*m^2, got -0.01907");

@@ -114,7 +114,7 @@ TEST(ModelInclude, IncludedValuesAreLocatedInTheirPartWithTheChain) {
 
 TEST(ModelInclude, SetOverridesReachIncludedValuesByTheirPrefixedNames) {
     const ModelSpec spec = read(kData + "/include_two_drums.yaml",
-                                {{"elements.left_charge.constant_torque", "60 N*m"}, {"bodies.right_drum.inertia", "3"}});
+                                {{"elements.left_charge.constant_torque", "60 N*m"}, {"bodies.right_drum.inertia", "3 kg*m^2"}});
     EXPECT_EQ(spec.findElement("left_charge")->number("constant_torque"), 60);
     EXPECT_EQ(spec.findElement("right_charge")->number("constant_torque"), 80);
     EXPECT_EQ(spec.findBody("right_drum")->inertia, 3);
@@ -216,7 +216,7 @@ TEST_F(IncludeFiles, PartWithoutBodiesOrElementsAddsNothingAndAnEmptyPartIsAnErr
     write("parts/nothing.yaml", "description: only words\n");
     write("parts/empty.yaml", "");
     const std::string ok = write("ok.yaml", "format_version: 1\nname: x\ninclude: parts/nothing.yaml\n"
-                                            "bodies:\n  - {name: r, inertia: 1, joint: {type: pin}}\n"
+                                            "bodies:\n  - {name: r, inertia: 1 kg*m^2, joint: {type: pin}}\n"
                                             "scenario: {analysis: linearize}\n");
     EXPECT_EQ(read(ok).bodies.size(), 1u);
     const std::string bad = write("bad.yaml", "format_version: 1\nname: x\ninclude: parts/empty.yaml\n"

@@ -30,7 +30,7 @@ const std::string kModel = std::string(MILLDYN_SOURCE_DIR) + "/models/burr_mill_
 // Six short points (the grid of SweepTest): 0.3 s of the start each.
 const std::string kSweep = "sweep " + kModel +
                            " --grid 'elements.grinding.constant_torque=10 N*m:30 N*m:3'"
-                           " --grid elements.belt.damping=0.1:0.5:2"
+                           " --grid 'elements.belt.damping=0.1 N*m*s/rad:0.5 N*m*s/rad:2'"
                            " --set 'scenario.end_time=0.3 s' --set outputs.plots=false";
 // Root in a container needs the two ALLOW variables; 2 ranks on fewer cores
 // need --oversubscribe. Both are harmless elsewhere.

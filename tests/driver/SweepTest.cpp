@@ -41,11 +41,11 @@ SweepOptions options(const std::string& dir, unsigned jobs) {
 
 SweepPlan smallGrid() {
     return makeGrid({parseGrid("elements.grinding.constant_torque=10 N*m:30 N*m:3"),
-                     parseGrid("elements.belt.damping=0.1:0.5:2")});
+                     parseGrid("elements.belt.damping=0.1 N*m*s/rad:0.5 N*m*s/rad:2")});
 }
 
 TEST(SweepTest, GridValuesAreEvenlySpacedWithUnitsAndRoundedToTwelveDigits) {
-    const SweepAxis a = parseGrid("elements.belt.damping=0.1:0.5:3");
+    const SweepAxis a = parseGrid("elements.belt.damping=0.1 N*m*s/rad:0.5 N*m*s/rad:3");
     ASSERT_EQ(a.values.size(), 3u);
     EXPECT_EQ(a.values[1], 0.3);  // exactly, after rounding to 12 digits
     const SweepAxis b = parseGrid("scenario.runout_time=1.0 s:2.0 s:5");
@@ -55,7 +55,7 @@ TEST(SweepTest, GridValuesAreEvenlySpacedWithUnitsAndRoundedToTwelveDigits) {
     EXPECT_EQ(plan.count, 15u);
     // Row-major: the last axis varies fastest.
     EXPECT_EQ(plan.overrides(1)[1].value, "1.25 s");
-    EXPECT_EQ(plan.overrides(5)[0].value, "0.3");
+    EXPECT_EQ(plan.overrides(5)[0].value, "0.3 N*m*s/rad");
 }
 
 TEST(SweepTest, BadGridOrRangeIsASpecErrorNamingTheOption) {
@@ -125,7 +125,7 @@ TEST(SweepTest, ShardsMergeIntoTheUnshardedTable) {
 }
 
 TEST(SweepTest, BadPointIsRecordedWithItsDiagnosticAndTheOthersRun) {
-    const SweepPlan plan = makeGrid({parseGrid("elements.belt.stiffness=-100:500:3")});
+    const SweepPlan plan = makeGrid({parseGrid("elements.belt.stiffness=-100 N*m/rad:500 N*m/rad:3")});
     const std::string d = freshDir("bad");
     const SweepSummary s = runSweep(plan, options(d, 2));
     EXPECT_EQ(s.total, 3u);

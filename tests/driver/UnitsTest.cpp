@@ -395,3 +395,35 @@ TEST(UnitsErrors, RandomInputsEitherParseOrThrowUnitError) {
 
 }  // namespace
 }  // namespace milldyn::units
+
+namespace milldyn::units {
+namespace {
+
+TEST(UnitsRequired, BareNumberOnADimensionalUnitIsRefusedWithTheUsualUnits) {
+    try {
+        toSIRequiringUnit("1490", "rad/s");
+        ADD_FAILURE() << "a bare 1490 was accepted as rad/s";
+    } catch (const UnitError& e) {
+        EXPECT_EQ(std::string(e.what()), "a bare number needs a unit here (did you mean 1490 rpm or 1490 rad/s?)");
+        EXPECT_EQ(e.column(), 4u);  // just after the number, where the unit goes
+    }
+    EXPECT_THROW(toSIRequiringUnit(" 2.5e-3 ", "m"), UnitError);
+    EXPECT_THROW(toSIRequiringUnit("-40", "rad"), UnitError);
+}
+
+TEST(UnitsRequired, ZeroDimensionlessAndWrittenUnitsPass) {
+    EXPECT_EQ(toSIRequiringUnit("0", "N*m/rad"), 0.0);
+    EXPECT_EQ(toSIRequiringUnit("0.0", "m"), 0.0);
+    EXPECT_EQ(toSIRequiringUnit("1e-7", "1"), 1e-7);
+    EXPECT_NEAR(toSIRequiringUnit("1490 rpm", "rad/s"), 1490 * 2 * 3.14159265358979323846 / 60, 1e-12);
+    EXPECT_EQ(toSIRequiringUnit("5 mm", "m"), 5e-3);
+}
+
+TEST(UnitsRequired, SuggestionsEndWithTheSiUnit) {
+    EXPECT_EQ(suggestedUnits("rad/s"), (std::vector<std::string>{"rpm", "rad/s"}));
+    EXPECT_EQ(suggestedUnits("kg*m^2"), (std::vector<std::string>{"kg*m^2"}));
+    EXPECT_EQ(suggestedUnits("kg*m^2/s^3"), (std::vector<std::string>{"kW", "kg*m^2/s^3"}));
+}
+
+}  // namespace
+}  // namespace milldyn::units

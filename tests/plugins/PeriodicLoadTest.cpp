@@ -15,6 +15,7 @@
 
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/loads/PeriodicLoad.h"
+#include "driver/analyses/Analysis.h"
 #include "tests/plugins/ShaftFixture.h"
 
 namespace milldyn {
@@ -496,7 +497,7 @@ TEST(PeriodicLoadRegistryTest, SchemaListsTheDocumentedKeys) {
     std::set<std::string> keys;
     for (const auto& p : schema.params) keys.insert(p.key);
     EXPECT_EQ(keys, (std::set<std::string>{"bodies", "rows", "mean_torque", "amplitudes",
-                                           "fundamental_frequency", "arrangement", "smoothing_speed"}));
+                                           "fundamental_frequency", "arrangement", "phases", "smoothing_speed"}));
     EXPECT_EQ(schema.find("bodies")->kind, ParamKind::BodyList);
     EXPECT_EQ(schema.find("amplitudes")->kind, ParamKind::QuantityList);
     EXPECT_EQ(schema.find("amplitudes")->unit, "N*m");
@@ -599,6 +600,79 @@ TEST(PeriodicLoadRegistryTest, BuiltInPhaseLoadGivesEveryRowTheSameTorque) {
     // t = π/10 s: θ = P1·t = π/2, sin θ = 1, sin 2θ = 0: 10 + 4 = 14 N*m on each row.
     b.state.setTime(SimTK::Pi / 10);
     for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(b.torqueOn(i), -14.0, kRoundingRelTolerance * 16);
+}
+
+}  // namespace
+}  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+// ---- issue 20 item 5: a phase per row (any stagger) ---------------------------
+
+// Two rows on one body with φ = 0 and φ = 40°, b = (5, 3), M̄ = 2:
+//   Σ = 2·2 + 5·(sin θ + sin(θ + φ)) + 3·(sin 2θ + sin(2θ + 2φ)),  θ = P1·t,
+// neither the in-phase nor the 360°/n stagger.
+TEST(PeriodicLoadPhases, ListedPhasesReplaceTheArrangement) {
+    const double phi = 40 * SimTK::Pi / 180;
+    PeriodicLoadParams p = loadParams(2, 2.0, {5, 3}, 3.0, true);
+    p.phases = {0.0, phi};
+    LoadOnShafts m(p, {kShaftInertia});
+    EXPECT_EQ(m.load->rowPhase(0), 0.0);
+    EXPECT_EQ(m.load->rowPhase(1), phi);
+    for (double t : {0.0, 0.1, 0.37, 2.9}) {
+        m.set(t, kRunningSpeed);
+        const double th = 3.0 * t;
+        const double expected = 4 + 5 * (std::sin(th) + std::sin(th + phi)) +
+                                3 * (std::sin(2 * th) + std::sin(2 * th + 2 * phi));
+        EXPECT_NEAR(m.torqueOn(0), -expected, kRoundingRelTolerance * 20) << "t = " << t;
+    }
+    // t = 0: 5·sin 40° + 3·sin 80° = 3.2139380484326967 + 2.954423259036624
+    //        = 6.16836130746932, plus 4: 10.16836130746932 N*m.
+    m.set(0.0, kRunningSpeed);
+    EXPECT_NEAR(m.torqueOn(0), -10.16836130746932, kRoundingRelTolerance * 20);
+}
+
+TEST(PeriodicLoadPhases, WrongNumberOfPhasesThrowsNamingPhases) {
+    ShaftSystem rig;
+    std::vector<SimTK::MobilizedBody> bodies{rig.addShaft(kShaftInertia)};
+    PeriodicLoadParams p = loadParams(3, 1.0, {1.0}, 1.0, true);
+    p.phases = {0.0, 1.0};
+    test::expectInvalidArgumentNaming("phases", [&] { (void)std::make_unique<PeriodicLoad>(rig.forces(), bodies, p); });
+}
+
+}  // namespace
+}  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+TEST(PeriodicLoadPhases, ModelFileChecksThePhaseCountAndRefusesPhasesWithArrangement) {
+    const std::string text = R"(format_version: 1
+name: rows
+bodies:
+  - {name: rotor, inertia: 1 kg*m^2, joint: {type: pin}}
+elements:
+  - type: PeriodicLoad
+    name: crushing
+    bodies: [rotor]
+    rows: 3
+    amplitudes: [1 N*m]
+    fundamental_frequency: 2 rad/s
+    phases: [0 deg, 40 deg, 80 deg]
+scenario: {analysis: transient, end_time: 1 s}
+)";
+    const ModelSpec ok = readModelText(text, "m.yaml", defaultModelReader(), {});
+    EXPECT_NEAR(ok.findElement("crushing")->numbers("phases")[2], 80 * SimTK::Pi / 180, 1e-15);
+    try {
+        readModelText(text, "m.yaml", defaultModelReader(), {{"elements.crushing.rows", "4"}});
+        ADD_FAILURE() << "3 phases for 4 rows accepted";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.key(), "crushing.phases");
+        EXPECT_NE(std::string(e.what()).find("one phase per row (4), got 3"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(readModelText(text, "m.yaml", defaultModelReader(), {{"elements.crushing.arrangement", "in_phase"}}),
+                 SpecError);
 }
 
 }  // namespace

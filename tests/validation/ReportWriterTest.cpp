@@ -150,3 +150,22 @@ TEST(ReportWriter, WithoutGnuplotTheReportIsWrittenAndSaysSo) {
 
 }  // namespace
 }  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+TEST(ReportWriter, ZeroOracleRowsShowAnAbsoluteErrorWithTheirUnit) {
+    const fs::path dir = freshDirectory("milldyn_report_zero_oracle");
+    ValidationRow row = compareRow("gamma_balance", "net torque", "N*m", 2.9e-17, 0.0, 1e-9);
+    std::string warning;
+    writeValidationReport(dir.string(), {row, compareRow("gamma_balance", "speed", "rad/s", 1.5, 1.0, 1e-6)}, {},
+                          warning);
+    const std::string md = readAll(dir / "report.md");
+    EXPECT_NE(md.find("abs. 2.9e-17 N\\*m"), std::string::npos) << md;  // markdown escapes the *
+    EXPECT_EQ(md.find("e+299"), std::string::npos) << md;
+    EXPECT_EQ(md.find("e+2"), std::string::npos) << "no huge relative error anywhere:\n" << md;
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace milldyn

@@ -117,15 +117,15 @@ ModelSpec modelFor(const BeltCase& c, const std::string& level, std::vector<Over
     }
     const double bulk = c.material.chargeDensity * c.material.bulkFraction;
     for (const char* charge : {"charge1", "charge2"}) {
-        o.push_back({std::string("elements.") + charge + ".half_angle", fmt(c.halfAngle)});
+        o.push_back({std::string("elements.") + charge + ".half_angle", fmt(c.halfAngle) + " rad"});
         o.push_back({std::string("elements.") + charge + ".length", fmt(c.material.drumLength) + " m"});
         o.push_back({std::string("elements.") + charge + ".bulk_density", fmt(bulk) + " kg/m^3"});
     }
     if (level == "paper" || level == "elastic_held") {  // held charges (dynamic_lag refuses a lag)
         // SegmentCharge's lag is measured from the leading tangent (u = sin·e_out
         // + cos·e_t), the oracle's from the trailing one: lag = π − α.
-        o.push_back({"elements.charge1.lag", fmt(M_PI - c.lag)});
-        o.push_back({"elements.charge2.lag", fmt(M_PI - c.lag)});
+        o.push_back({"elements.charge1.lag", fmt(M_PI - c.lag) + " rad"});
+        o.push_back({"elements.charge2.lag", fmt(M_PI - c.lag) + " rad"});
     }
     o.insert(o.end(), extra.begin(), extra.end());
     return readModelText(t, modelsDirectory() + kModel, defaultModelReader(), o);
@@ -231,9 +231,9 @@ AnalysisResult weldedInstant(const BeltCase& c, double phi) {
     const double d1 = ratio * phi + c.lag - M_PI / 2;
     return runAnalysis(modelFor(c, "rigid_charge",
                                 {{"scenario.angle_points", "1"},
-                                 {"scenario.angle_from", fmt(phi)},
-                                 {"elements.charge1.initial_direction", fmt(d1)},
-                                 {"elements.charge2.initial_direction", fmt(d1 + M_PI)}}));
+                                 {"scenario.angle_from", fmt(phi) + " rad"},
+                                 {"elements.charge1.initial_direction", fmt(d1) + " rad"},
+                                 {"elements.charge2.initial_direction", fmt(d1 + M_PI) + " rad"}}));
 }
 
 void paperFormCases(const std::string& filter, std::vector<ValidationRow>& rows) {
@@ -475,11 +475,11 @@ void startUpCases(const std::string& filter, std::vector<ValidationRow>& rows) {
         const AnalysisResult kin =
             runAnalysis(modelFor(c, "elastic_held",
                                  {{"scenario.angle_points", "1"},
-                                  {"scenario.angle_from", fmt(run.value(k, "carrier.angle"))},
-                                  {"scenario.carrier_speed", fmt(run.value(k, "carrier.speed"))},
-                                  {"scenario.time", fmt(t)},
-                                  {"elements.charge1.lag", fmt(run.value(k, "charge1.lag"))},
-                                  {"elements.charge2.lag", fmt(run.value(k, "charge2.lag"))}}));
+                                  {"scenario.angle_from", fmt(run.value(k, "carrier.angle")) + " rad"},
+                                  {"scenario.carrier_speed", fmt(run.value(k, "carrier.speed")) + " rad/s"},
+                                  {"scenario.time", fmt(t) + " s"},
+                                  {"elements.charge1.lag", fmt(run.value(k, "charge1.lag")) + " rad"},
+                                  {"elements.charge2.lag", fmt(run.value(k, "charge2.lag")) + " rad"}}));
         const double rDyn = run.value(k, "reaction_A1.on_drum1_at_axis_magnitude");
         const double rKin = kin.value(0, "reaction_A1.on_drum1_at_axis_magnitude");
         peakKinR = std::max(peakKinR, rKin);

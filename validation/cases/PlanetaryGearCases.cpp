@@ -221,6 +221,51 @@ void startUpCases(const Size& size, const std::string& filter, std::vector<Valid
     }
 }
 
+/// The paper's own convention (issue 20 items 1-2): journal loads from the
+/// frictionless reactions (`reaction: first_order`) reproduce eq (21) and the
+/// start torque with friction (20); at the start instant itself (ω = 0),
+/// breakaway friction (`at_rest: breakaway`) carries the friction of the
+/// motion beginning, which tanh(0) = 0 would drop.
+void firstOrderFrictionCases(const Size& size, const std::string& filter, std::vector<ValidationRow>& rows) {
+    const std::string name = "planetary_gear_" + size.tag + "_start_friction_first_order";
+    if (!wanted(name, filter)) return;
+    const oc::PlanetaryGearOracle zero(oracleParameters(size, 0));
+    const double eps0 = zero.calcInitialAcceleration(steadyRate(size), kAccelerationTime);
+    const oc::PlanetaryGearOracle withF(oracleParameters(size, 0.01));
+    std::vector<Override> paper;
+    for (const char* j : {"friction_A", "friction_B1", "friction_B2"}) {
+        paper.push_back({std::string("elements.") + j + ".reaction", "first_order"});
+        paper.push_back({std::string("elements.") + j + ".at_rest", "breakaway"});
+    }
+    // Just after the start (ω1 = 0.5 rad/s), as the start_friction case.
+    std::vector<Override> moving = paper;
+    moving.push_back({"scenario.carrier_speed", "0.5 rad/s"});
+    const AnalysisResult r = runKinetostatic(size, moving);
+    oc::PlanetaryGearMotionState st = oc::PlanetaryGearOracle::makeStartUpState(eps0);
+    st.carrierRate = 0.5;
+    const oc::PlanetaryGearLoads loads = withF.calcLoads(st, oc::ChargeMotion::kRotatesWithDrum);
+    const std::string why = "reaction: first_order (frictionless loads, the paper's convention)";
+    rows.push_back(compareRow(name, "friction torque at B2 (21), f = 0.01, ω1 = 0.5 rad/s", "N*m",
+                              r.value(0, "friction_B2.torque"), loads.drums[1].bearingFrictionTorque,
+                              kKinetostaticTolerance, why));
+    rows.push_back(compareRow(name, "drive torque with friction (20), f = 0.01, ω1 = 0.5 rad/s", "N*m",
+                              r.value(0, "drive.torque"), loads.driveTorque, kKinetostaticTolerance, why));
+    // The start instant itself, ω1 = 0 (the shipped scenario): breakaway.
+    const AnalysisResult r0 = runKinetostatic(size, paper);
+    const oc::PlanetaryGearLoads start = withF.calcStartUpLoads(eps0);
+    rows.push_back(compareRow(name, "start torque with friction (20), f = 0.01, ω1 = 0 (breakaway)", "N*m",
+                              r0.value(0, "drive.torque"), start.driveTorque, kKinetostaticTolerance,
+                              why + "; at_rest: breakaway (friction against the prescribed acceleration)"));
+    // New parameters through --set alone (docs/reproducing-papers.md): f = 0.03.
+    std::vector<Override> newF = paper;
+    for (const char* j : {"friction_A", "friction_B1", "friction_B2"})
+        newF.push_back({std::string("elements.") + j + ".friction_coefficient", "0.03"});
+    const double paperTorque = oc::PlanetaryGearOracle(oracleParameters(size, 0.03)).calcStartUpLoads(eps0).driveTorque;
+    rows.push_back(compareRow(name, "start torque with friction (20), f = 0.03 by --set, ω1 = 0", "N*m",
+                              runKinetostatic(size, newF).value(0, "drive.torque"), paperTorque,
+                              kKinetostaticTolerance, why + "; at_rest: breakaway"));
+}
+
 void steadyCases(const Size& size, const std::string& filter, std::vector<ValidationRow>& rows) {
     const std::string base = "planetary_gear_" + size.tag + "_steady";
     const double w = steadyRate(size);
@@ -245,8 +290,8 @@ void steadyCases(const Size& size, const std::string& filter, std::vector<Valida
         o.push_back({"scenarios.turn.angle_points", std::to_string(points)});
         o.push_back({"scenarios.turn.carrier_speed", fmt(w) + " rad/s"});
         if (v.motion == oc::ChargeMotion::kHeldInCarrierFrame) {
-            o.push_back({"elements.charge1.lag", fmt(v.lag)});
-            o.push_back({"elements.charge2.lag", fmt(v.lag)});
+            o.push_back({"elements.charge1.lag", fmt(v.lag) + " rad"});
+            o.push_back({"elements.charge2.lag", fmt(v.lag) + " rad"});
         }
         const AnalysisResult r = runKinetostatic(size, o);
         double worstTorque = 0, worstReaction = 0, worstJ = 0;
@@ -504,6 +549,7 @@ std::vector<ValidationRow> planetaryGearCases(const std::string& filter) {
     std::vector<ValidationRow> rows;
     for (const Size& size : kSizes) {
         startUpCases(size, filter, rows);
+        firstOrderFrictionCases(size, filter, rows);
         steadyCases(size, filter, rows);
         figure10Cases(size, filter, rows);
         dynamicLagCases(size, filter, rows);

@@ -32,6 +32,14 @@ std::string relText(double v) {
     return buf;
 }
 
+/// The error of a row: relative, or absolute (with its unit) where the
+/// oracle is 0 and a relative error means nothing ("rel. 2.9e+299").
+std::string errorText(const ValidationRow& r) {
+    if (r.oracle != 0) return relText(r.relError);
+    const double value = r.multibody ? *r.multibody : r.paper ? *r.paper : NAN;
+    return "abs. " + relText(std::abs(value)) + (r.unit == "1" || r.unit.empty() ? "" : " " + r.unit);
+}
+
 /// The two output formats behind one interface, so both say the same.
 class Doc {
 public:
@@ -240,6 +248,7 @@ ReportTable caseSummary(const std::vector<ValidationRow>& rows) {
         if (!acc.count(r.caseName)) order.push_back(r.caseName);
         Acc& a = acc[r.caseName];
         (r.status == "pass" ? a.counts.pass : r.status == "flagged" ? a.counts.flagged : a.counts.fail)++;
+        if (r.oracle == 0) continue;  // no relative error: its absolute one is in the row tables
         double& worst = r.multibody ? a.worstModel : a.worstPaper;
         worst = std::isnan(worst) ? r.relError : std::max(worst, r.relError);
     }
@@ -253,7 +262,8 @@ ReportTable caseSummary(const std::vector<ValidationRow>& rows) {
                           std::to_string(a.counts.fail), relText(a.worstModel), relText(a.worstPaper)});
     }
     t.caption = "Relative errors are |value − oracle|/|oracle| (phases: the wrapped difference); paper rows "
-                "include the flagged ones.";
+                "include the flagged ones. Where the oracle is 0 the row tables give the absolute error "
+                "(abs.) instead; it is left out of these maxima.";
     return t;
 }
 
@@ -270,7 +280,7 @@ ReportTable rowTable(const std::string& title, const std::vector<const Validatio
                                           r->paper ? formatCell(*r->paper, 8) : "",
                                           formatCell(r->oracle, 8),
                                           r->multibody ? formatCell(*r->multibody, 8) : "",
-                                          relText(r->relError),
+                                          errorText(*r),
                                           relText(r->tolerance)};
         if (withStatus) cells.push_back(r->status);
         cells.push_back(r->note);

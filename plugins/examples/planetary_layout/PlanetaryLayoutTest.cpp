@@ -197,7 +197,7 @@ TEST(PlanetaryLayoutModel, StartFromRestKeepsTheDrumsTurningBackwards) {
     const double w1 = kEps0 * (1 - std::exp(-0.2));
     EXPECT_NEAR(m.at("carrier.speed"), w1, 1e-6 * w1);
     for (const char* drum : {"drum1", "drum2"}) {
-        const double absolute = m.at(std::string(drum) + ".speed") + m.at("carrier.speed");
+        const double absolute = m.at(std::string(drum) + ".speed_rel_carrier") + m.at("carrier.speed");
         EXPECT_NEAR(absolute / m.at("carrier.speed"), -(0.20 - 0.05) / 0.05, 1e-9) << drum;
     }
 }
