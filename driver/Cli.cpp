@@ -208,8 +208,15 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
         if (!w.empty()) err << "milldyn: warning: " << w << "\n";
     }
 
-    if (a.quiet) return 0;
+    // A start that stalled or did not finish is a run that did not do what
+    // was asked: its outputs are written, the verdict says why, exit 3.
+    const int code = result.verdict.empty() || result.verdict == "completed" ? 0 : 3;
+    if (a.quiet) {
+        if (code) err << "milldyn: " << result.verdictText << "\n";
+        return code;
+    }
     out << spec.name << "\n  analysis: " << result.analysis << "\n";
+    if (!result.verdict.empty()) out << "  verdict: " << result.verdictText << "\n";
     for (const auto& r : result.results)
         out << "  " << r.name << std::string(std::max<std::size_t>(2, 26 - std::min<std::size_t>(26, r.name.size())), ' ')
             << describeValue(r.name, r.value, r.unit) << "\n";
@@ -222,7 +229,7 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     out << std::setprecision(3) << info.wallSeconds << " s wall\n  wrote";
     for (std::size_t i = 0; i < files.size(); ++i) out << (i ? ", " : " ") << files[i];
     out << "\n";
-    return 0;
+    return code;
 }
 
 int commandInfo(const Arguments& a, std::ostream& out) {

@@ -55,5 +55,6 @@ std::vector<ValidationRow> rollCrusherCases(const std::string& filter);
 std::vector<ValidationRow> planetaryGearCases(const std::string& filter);
 std::vector<ValidationRow> planetaryBeltCases(const std::string& filter);
 std::vector<ValidationRow> beadMillCases(const std::string& filter);
+std::vector<ValidationRow> startCases(const std::string& filter);
 
 }  // namespace milldyn
