@@ -30,7 +30,8 @@ std::string fmt(double v) {
 
 /**
  * The start verdict over the samples up to the first switch-off (the start
- * window). The reference speed ω_ref is the drives' rated speed referred
+ * window); returns whether the speed was held (also for a run that does not
+ * start from rest, which gets no verdict). The reference speed ω_ref is the drives' rated speed referred
  * to speed_body (Scene::speedHints; the final speed if no drive hints one).
  * The speed is *held* when every sample of the last hold_time of the
  * window lies within start_tolerance·ω_ref of the window's last speed ω_e.
@@ -40,13 +41,13 @@ std::string fmt(double v) {
  *   unfinished: not held (still accelerating, or oscillating) when the
  *               window ended
  */
-void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body, std::size_t col, double switchTime,
-                AnalysisResult& result) {
+bool judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body, std::size_t col, double switchTime,
+                bool fromRest, AnalysisResult& result) {
     const ElementSpec& sc = spec.scenario;
     std::vector<const std::vector<double>*> window;
     for (const auto& row : result.rows)
         if (row[0] <= switchTime) window.push_back(&row);
-    if (window.empty()) return;
+    if (window.empty()) return false;
     const double tEnd = window.back()->at(0), wEnd = window.back()->at(col);
     const auto hints = scene.speedHints();
     const auto hint = hints.find(body.name);
@@ -60,16 +61,17 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
     for (const auto* row : window)
         if (row->at(0) >= tEnd - hold) worst = std::max(worst, std::abs(row->at(col) - wEnd));
     held = held && worst <= band;
+    if (!fromRest) return held;  // no start to judge: only whether the end is steady
     const double fraction = sc.number("stall_fraction");
-    const std::string ref = hinted ? "its drive's rated speed " + fmt(wRef) + " rad/s referred to " + body.name
+    const std::string ref = hinted ? "the rated speed " + fmt(wRef) + " rad/s referred to " + body.name
                                    : "its final speed (no drive hints a rated speed)";
-    const std::string holdText = "within " + fmt(tol * 100) + " % of " + ref + " (±" + fmt(band) + " rad/s) for the last " +
+    const std::string holdText = "within ±" + fmt(band) + " rad/s (" + fmt(tol * 100) + " % of ω_ref) for the last " +
                                  fmt(hold) + " s before " + (std::isfinite(switchTime) ? "switch-off" : "the end");
     const double wRpm = wEnd * 30 / SimTK::Pi;
     if (held && std::abs(wEnd) >= fraction * wRef) {
         result.verdict = "completed";
         result.verdictText = "start completed: " + body.name + " held " + fmt(wEnd) + " rad/s (" + fmt(wRpm) + " rpm) " +
-                             holdText + ", at >= " + fmt(fraction * 100) + " % of " + ref;
+                             holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref;
     } else if (held) {
         result.verdict = "stalled";
         // Drive and load torques at the last sample of the window.
@@ -95,6 +97,7 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
     }
     result.results.push_back({"start_completed", result.verdict == "completed" ? 1.0 : 0.0, "1",
                               "1 if the start completed (see verdict), else 0"});
+    return held;
 }
 
 }  // namespace
@@ -185,8 +188,11 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
 
     // The start verdict (from rest only): over the samples before switch-off.
     const std::size_t speedCol = table.column(speedBody.name + ".speed");
-    if (start == "rest") judgeStart(*scene, spec, speedBody, speedCol, switchTime, result);
-    const bool reached = result.verdict.empty() || result.verdict == "completed";
+    if (start == "rest") judgeStart(*scene, spec, speedBody, speedCol, switchTime, true, result);
+    // A start that did not complete has no steady values. (A run from a
+    // given or steady state keeps the names: what it ends in is the user's
+    // question, e.g. a braked run-out's end speed.)
+    const bool reached = start != "rest" || result.verdict == "completed";
     // A start that did not complete has no steady values: its numbers are
     // what the shafts did at the end of the start window.
     const std::string suffix = reached ? "" : "_at_end";

@@ -14,6 +14,8 @@ void registerJointReaction(ElementRegistry& registry);
 void registerBeltDrive(ElementRegistry& registry);
 void registerDiscDrag(ElementRegistry& registry);
 void registerFlexibleRotor(ElementRegistry& registry);
+void registerClutch(ElementRegistry& registry);
+void registerBrake(ElementRegistry& registry);
 
 void registerBuiltinElements(ElementRegistry& registry) {
     registerInductionMotor(registry);
@@ -28,6 +30,8 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerBeltDrive(registry);
     registerDiscDrag(registry);
     registerFlexibleRotor(registry);
+    registerClutch(registry);
+    registerBrake(registry);
 }
 
 }  // namespace milldyn

@@ -29,6 +29,14 @@ double reducedVoltageTorqueRatio(double v) { return v * v; }
 
 double rotorHeatInertiaStart(double J, double wc, double we) { return J * (wc * we - 0.5 * we * we); }
 
-double clutchSlipEnergy(double J, double w0, double Mf, double Mc) { return 0.5 * J * w0 * w0 * Mf / (Mf - Mc); }
+double clutchSlipEnergy(double J1, double J2, double w0, double Mf, double Mc) {
+    const double a = Mf / J1 + (Mf - Mc) / J2;
+    return 0.5 * Mf * w0 * w0 / a;
+}
+
+double brakedSpeed(double J, double w0, double Mb, double Mc, double Tr, double t) {
+    const double rampImpulse = t < Tr ? Mb * t * t / (2 * Tr) : Mb * (t - Tr / 2);
+    return w0 - (Mc * t + rampImpulse) / J;
+}
 
 }  // namespace milldyn::oracles

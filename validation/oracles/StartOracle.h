@@ -38,9 +38,19 @@ double reducedVoltageTorqueRatio(double voltageRatio);
 /// J·(ωc·ω_e − ω_e²/2); ½·J·ωc² when ω_e = ωc [J].
 double rotorHeatInertiaStart(double J, double synchronousSpeed, double endSpeed);
 
-/// Slip energy of a friction clutch of constant torque Mf accelerating a
-/// load J from rest to the constant speed ω0 of its driving side against a
-/// constant load Mc < Mf: E = ½·J·ω0²·Mf/(Mf − Mc) [J]; slip time J·ω0/(Mf − Mc).
-double clutchSlipEnergy(double J, double drivingSpeed, double frictionTorque, double loadTorque);
+/// Slip energy of a friction clutch of constant torque Mf [N*m] between a
+/// driving inertia J1 (no drive torque) turning at ω0 and a driven J2 at
+/// rest with a constant load Mc [N*m]: the slip speed falls at
+/// a = Mf/J1 + (Mf − Mc)/J2, slips for t_s = ω0/a and heats
+/// E = Mf·ω0·t_s/2 = ½·Mf·ω0²/a [J] (J1 → ∞: ½·J2·ω0²·Mf/(Mf − Mc)).
+/// With Mc = 0 the heat is ½·ω0²·J1·J2/(J1 + J2) for any engagement ramp
+/// Mf(t): E = ∫Mf·v dt and a(t)·dt = −dv give E = ∫v·(−dv)/(1/J1 + 1/J2).
+double clutchSlipEnergy(double J1, double J2, double drivingSpeed, double frictionTorque, double loadTorque);
+
+/// Speed of an inertia J [kg*m^2] from ω0 [rad/s] under a brake whose
+/// torque rises linearly from 0 to Mb over Tr [s] from t = 0, and a
+/// constant load Mc [N*m], until it stops:
+/// ω(t) = ω0 − (Mc·t + Mb·(t²/(2Tr) for t < Tr, t − Tr/2 after))/J [rad/s].
+double brakedSpeed(double J, double omega0, double brakeTorque, double loadTorque, double rampTime, double t);
 
 }  // namespace milldyn::oracles
