@@ -208,9 +208,11 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
         if (!w.empty()) err << "milldyn: warning: " << w << "\n";
     }
 
-    // A start that stalled or did not finish is a run that did not do what
-    // was asked: its outputs are written, the verdict says why, exit 3.
-    const int code = result.verdict.empty() || result.verdict == "completed" ? 0 : 3;
+    // A start that stalled is a machine that does not do what was asked:
+    // its outputs are written, the verdict says why, exit 3. An unfinished
+    // start (end_time too short) prints its verdict and no steady values,
+    // and exits 0: the run did what it was told.
+    const int code = result.verdict == "stalled" ? 3 : 0;
     if (a.quiet) {
         if (code) err << "milldyn: " << result.verdictText << "\n";
         return code;

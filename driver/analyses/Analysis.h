@@ -48,7 +48,7 @@ struct AnalysisResult {
     std::vector<std::string> notes;  ///< what happened, in words
     /// A transient's start verdict: "completed", "stalled", "unfinished"
     /// (empty: no start was simulated), and the sentence that says why
-    /// with the numbers. A run whose start is stalled or unfinished exits 3.
+    /// with the numbers. A run whose start stalled exits 3.
     std::string verdict;
     std::string verdictText;
     RunStatistics statistics;

@@ -34,10 +34,14 @@ std::string fmt(double v) {
  * start from rest, which gets no verdict). The reference speed ω_ref is the drives' rated speed referred
  * to speed_body (Scene::speedHints; the final speed if no drive hints one).
  * The speed is *held* when every sample of the last hold_time of the
- * window lies within start_tolerance·ω_ref of the window's last speed ω_e.
+ * window lies within start_tolerance·ω_ref of the window's last speed ω_e,
+ * and its mean drift over that time, continued for the whole run, would
+ * not leave that band.
  *   completed:  held and ω_e >= stall_fraction·ω_ref
- *   stalled:    held and ω_e <  stall_fraction·ω_ref (the drive cannot take
- *               the load past this speed; the torques there are given)
+ *   stalled:    held and ω_e <  stall_fraction·ω_ref, and not still gaining
+ *               speed at >= a tenth of its mean rate since the start (the
+ *               drive cannot take the load past this speed; the torques
+ *               there are given)
  *   unfinished: not held (still accelerating, or oscillating) when the
  *               window ended
  */
@@ -60,19 +64,36 @@ bool judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
     double worst = 0;
     for (const auto* row : window)
         if (row->at(0) >= tEnd - hold) worst = std::max(worst, std::abs(row->at(col) - wEnd));
-    held = held && worst <= band;
+    // Held also means not drifting: at the window's mean rate the speed
+    // must stay in the band for as long as the run has lasted (a short run
+    // of a start that is still accelerating is unfinished, not stalled).
+    const double tWindow = std::max(tEnd - hold, window.front()->at(0));
+    double wWindow = wEnd;
+    for (const auto* row : window)
+        if (row->at(0) >= tWindow) {
+            wWindow = row->at(col);
+            break;
+        }
+    const double drift = hold > 0 ? std::abs(wEnd - wWindow) / hold : 0;
+    const double elapsed = tEnd - window.front()->at(0);
+    held = held && worst <= band && drift * elapsed <= band;
+    // A stall is an equilibrium: below the started speed a shaft still
+    // gaining speed at >= a tenth of its mean rate since the start is not
+    // stalled but slow (its start is unfinished).
+    const double meanRate = elapsed > 0 ? std::abs(wEnd - window.front()->at(col)) / elapsed : 0;
+    const bool stillRising = hold > 0 && (wEnd - wWindow) / hold > 0.1 * meanRate;
     if (!fromRest) return held;  // no start to judge: only whether the end is steady
     const double fraction = sc.number("stall_fraction");
     const std::string ref = hinted ? "the rated speed " + fmt(wRef) + " rad/s referred to " + body.name
                                    : "its final speed (no drive hints a rated speed)";
     const std::string holdText = "within ±" + fmt(band) + " rad/s (" + fmt(tol * 100) + " % of ω_ref) for the last " +
-                                 fmt(hold) + " s before " + (std::isfinite(switchTime) ? "switch-off" : "the end");
+                                 fmt(hold) + " s before " + (tEnd >= switchTime ? "switch-off" : "the end");
     const double wRpm = wEnd * 30 / SimTK::Pi;
     if (held && std::abs(wEnd) >= fraction * wRef) {
         result.verdict = "completed";
         result.verdictText = "start completed: " + body.name + " held " + fmt(wEnd) + " rad/s (" + fmt(wRpm) + " rpm) " +
                              holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref;
-    } else if (held) {
+    } else if (held && !stillRising) {
         result.verdict = "stalled";
         // Drive and load torques at the last sample of the window.
         std::string drive, load;
