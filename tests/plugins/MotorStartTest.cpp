@@ -237,5 +237,34 @@ TEST(InductionMotorInput, BadStartInputsGiveOneLocatedLine) {
               std::string::npos);
 }
 
+// A star-delta switch at a speed: the step is taken at the end of the first
+// accepted step past 60 rad/s, so every sample below it is in star (1/3 of
+// the Kloss torque) and every sample clearly above it in delta.
+TEST(InductionMotorStarter, StarDeltaSwitchesAtASpeed) {
+    const std::string text = "format_version: 1\nname: t\nbodies:\n  - name: shaft\n    inertia: 1.5 kg*m^2\n"
+                             "    joint: {type: pin, parent: ground}\nelements:\n  - type: InductionMotor\n"
+                             "    name: motor\n    body: shaft\n    rated_torque: 97.4 N*m\n    rated_speed: 1470 rpm\n"
+                             "    synchronous_speed: 1500 rpm\n    breakdown_ratio: 2.5\n    starter: star_delta\n"
+                             "    switch_speeds: [60 rad/s]\nscenario:\n  analysis: transient\n  end_time: 10 s\n"
+                             "integrator:\n  name: RungeKuttaMerson\n  accuracy: 1e-9\noutputs:\n  sample_interval: 5 ms\n";
+    const AnalysisResult r = runAnalysis(readModelText(text, "t.yaml", defaultModelReader()));
+    const double wc = 1500 * kRpm;
+    int star = 0, delta = 0;
+    for (std::size_t i = 0; i < r.rows.size(); ++i) {
+        const double w = r.value(i, "shaft.speed");
+        const double ratio = r.value(i, "motor.torque") / klossByHand((wc - w) / wc);
+        if (w < 60) {
+            EXPECT_NEAR(ratio, 1.0 / 3, 1e-12) << w;
+            ++star;
+        } else if (w > 61) {
+            EXPECT_NEAR(ratio, 1.0, 1e-12) << w;
+            ++delta;
+        }
+    }
+    EXPECT_GT(star, 10);
+    EXPECT_GT(delta, 10);
+    EXPECT_EQ(r.verdict, "completed") << r.verdictText;
+}
+
 }  // namespace
 }  // namespace milldyn
