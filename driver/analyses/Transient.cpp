@@ -35,11 +35,12 @@ std::string fmt(double v) {
  * to speed_body (Scene::speedHints; the final speed if no drive hints one).
  * The speed is *held* when every sample of the last hold_time of the
  * window lies within start_tolerance·ω_ref of the window's last speed ω_e,
- * and its mean drift over that time, continued for the whole run, would
- * not leave that band.
+ * and its mean drift over that time, continued for another hold_time,
+ * would not leave that band.
  *   completed:  held and ω_e >= stall_fraction·ω_ref
  *   stalled:    held and ω_e <  stall_fraction·ω_ref, and not still gaining
- *               speed at >= a tenth of its mean rate since the start (the
+ *               speed over the second half of the run at >= a tenth of its
+ *               mean rate since the start (the
  *               drive cannot take the load past this speed; the torques
  *               there are given)
  *   unfinished: not held (still accelerating, or oscillating) when the
@@ -64,9 +65,8 @@ bool judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
     double worst = 0;
     for (const auto* row : window)
         if (row->at(0) >= tEnd - hold) worst = std::max(worst, std::abs(row->at(col) - wEnd));
-    // Held also means not drifting: at the window's mean rate the speed
-    // must stay in the band for as long as the run has lasted (a short run
-    // of a start that is still accelerating is unfinished, not stalled).
+    // Held also means not drifting out: at the window's mean rate the speed
+    // must stay in the band for another hold window.
     const double tWindow = std::max(tEnd - hold, window.front()->at(0));
     double wWindow = wEnd;
     for (const auto* row : window)
@@ -76,15 +76,25 @@ bool judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
         }
     const double drift = hold > 0 ? std::abs(wEnd - wWindow) / hold : 0;
     const double elapsed = tEnd - window.front()->at(0);
-    held = held && worst <= band && drift * elapsed <= band;
-    // A stall is an equilibrium: below the started speed a shaft still
-    // gaining speed at >= a tenth of its mean rate since the start is not
-    // stalled but slow (its start is unfinished).
+    held = held && worst <= band && drift * hold <= band;
+    // A stall is an equilibrium: below the started speed a shaft that
+    // gained speed over the second half of the run at >= a tenth of its mean
+    // rate since the start is not stalled but slow (its start is
+    // unfinished). Half the run, not the hold window: a belt mode rings
+    // through a short window.
     const double meanRate = elapsed > 0 ? std::abs(wEnd - window.front()->at(col)) / elapsed : 0;
-    const bool stillRising = hold > 0 && (wEnd - wWindow) / hold > 0.1 * meanRate;
+    const double tMid = window.front()->at(0) + 0.5 * elapsed;
+    double wMid = wEnd, tMidSample = tEnd;
+    for (const auto* row : window)
+        if (row->at(0) >= tMid) {
+            wMid = row->at(col);
+            tMidSample = row->at(0);
+            break;
+        }
+    const bool stillRising = tEnd > tMidSample && (wEnd - wMid) / (tEnd - tMidSample) > 0.1 * meanRate;
     if (!fromRest) return held;  // no start to judge: only whether the end is steady
     const double fraction = sc.number("stall_fraction");
-    const std::string ref = hinted ? "the rated speed " + fmt(wRef) + " rad/s referred to " + body.name
+    const std::string ref = hinted ? "the drives' running speed " + fmt(wRef) + " rad/s referred to " + body.name
                                    : "its final speed (no drive hints a rated speed)";
     const std::string holdText = "within ±" + fmt(band) + " rad/s (" + fmt(tol * 100) + " % of ω_ref) for the last " +
                                  fmt(hold) + " s before " + (tEnd >= switchTime ? "switch-off" : "the end");
