@@ -315,8 +315,17 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
         if (!w.empty()) err << "milldyn: warning: " << w << "\n";
     }
 
-    if (a.quiet) return 0;
+    // A start that stalled is a machine that does not do what was asked:
+    // its outputs are written, the verdict says why, exit 3. An unfinished
+    // start (end_time too short) prints its verdict and no steady values,
+    // and exits 0: the run did what it was told.
+    const int code = result.verdict == "stalled" ? 3 : 0;
+    if (a.quiet) {
+        if (code) err << "milldyn: " << result.verdictText << "\n";
+        return code;
+    }
     out << spec.name << "\n  analysis: " << result.analysis << "\n";
+    if (!result.verdict.empty()) out << "  verdict: " << result.verdictText << "\n";
     for (const auto& r : result.results)
         out << "  " << r.name << std::string(std::max<std::size_t>(2, 26 - std::min<std::size_t>(26, r.name.size())), ' ')
             << describeValue(r.name, r.value, r.unit) << "\n";
@@ -329,7 +338,7 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     out << std::setprecision(3) << info.wallSeconds << " s wall\n  wrote";
     for (std::size_t i = 0; i < files.size(); ++i) out << (i ? ", " : " ") << files[i];
     out << "\n";
-    return 0;
+    return code;
 }
 
 int commandInfo(const Arguments& a, std::ostream& out) {

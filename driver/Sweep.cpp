@@ -94,8 +94,10 @@ Json runPoint(const SweepPlan& plan, const SweepOptions& options, std::size_t po
                 throw AnalysisError("result " + s.name + " is not finite (the analysis diverged)");
             results[s.name] = {{"value", s.value}, {"unit", s.unit}};
         }
-        j["status"] = "ok";
-        j["diagnostic"] = "";
+        // A start that stalled or did not finish is recorded as such.
+        const bool started = r.verdict.empty() || r.verdict == "completed";
+        j["status"] = started ? "ok" : r.verdict;
+        j["diagnostic"] = started ? "" : r.verdictText;
         j["results"] = results;
     } catch (const SpecError& e) {
         j["status"] = "bad_input";

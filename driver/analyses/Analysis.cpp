@@ -67,6 +67,16 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
                   "replay: placed at each sample from the drives' time laws, no integration; "
                   "integrate: integrated like any other")
             .optional("replay"),
+        P::quantity("start_tolerance", "1",
+                    "start verdict: the speed is held when it stays within this fraction of the drive's "
+                    "rated speed (referred to speed_body) of its final value")
+            .optional(0.02).above(0).atMost(0.5),
+        P::quantity("hold_time", "s", "start verdict: how long the speed must be held (0: a tenth of the "
+                                      "time before switch-off)")
+            .optional(0.0).atLeast(0),
+        P::quantity("stall_fraction", "1", "start verdict: a speed held below this fraction of the rated speed "
+                                           "(referred to speed_body) is a stall")
+            .optional(0.8).above(0).below(1),
     };
     schemas["transient"] = transient;
 
@@ -309,15 +319,28 @@ void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK
     system.realize(start, SimTK::Stage::Dynamics);
     system.realize(end, SimTK::Stage::Dynamics);
     double sources = 0, loads = 0, dissipated = 0;
+    std::vector<ResultScalar> parts;
     for (std::size_t i = 0; i < meter->flows().size(); ++i) {
         // The meter's integrals start at 0 with the run; differences keep
         // this right for a run that starts from a later state.
         const double w = meter->work(end, i) - meter->work(start, i);
-        switch (meter->flows()[i].kind) {
-            case EnergyFlow::Kind::Source: sources += w; break;
-            case EnergyFlow::Kind::Load: loads += w; break;
-            case EnergyFlow::Kind::Dissipation: dissipated += w; break;
+        const EnergyFlow& f = meter->flows()[i];
+        std::string what = f.what;
+        switch (f.kind) {
+            case EnergyFlow::Kind::Source:
+                sources += w;
+                if (what.empty()) what = "work of the drive " + f.name;
+                break;
+            case EnergyFlow::Kind::Load:
+                loads += w;
+                if (what.empty()) what = "work taken by the load " + f.name + " (grinding, crushing, lifting the charge)";
+                break;
+            case EnergyFlow::Kind::Dissipation:
+                dissipated += w;
+                if (what.empty()) what = "heat in " + f.name + " (friction or damping)";
+                break;
         }
+        parts.push_back({"energy." + f.name, w, "J", what});
     }
     const double dKE = system.calcKineticEnergy(end) - system.calcKineticEnergy(start);
     const double dPE = system.calcPotentialEnergy(end) - system.calcPotentialEnergy(start);
@@ -325,15 +348,20 @@ void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK
     const double scale = std::max({std::abs(sources), std::abs(loads) + std::abs(dissipated),
                                    system.calcKineticEnergy(start), system.calcKineticEnergy(end),
                                    std::numeric_limits<double>::min()});
-    result.results.push_back({"energy_from_sources", sources, "J", "work of the drives"});
-    result.results.push_back({"energy_to_loads", loads, "J", "work taken by the loads"});
-    result.results.push_back({"energy_dissipated", dissipated, "J", "heat in the dampers"});
+    result.results.push_back({"energy_from_sources", sources, "J",
+                              "work of the drives (a motor's air-gap power, a prescribed drive's work)"});
+    result.results.push_back({"energy_to_loads", loads, "J", "work taken by the loads (grinding, crushing)"});
+    result.results.push_back({"energy_dissipated", dissipated, "J",
+                              "heat: rotor circuits, friction, damping, belt and clutch slip (energy.* splits it)"});
     result.results.push_back({"kinetic_energy_change", dKE, "J", "end minus start"});
-    result.results.push_back({"potential_energy_change", dPE, "J", "end minus start (springs)"});
+    result.results.push_back({"potential_energy_change", dPE, "J",
+                              "end minus start (gravity on lifted bodies and charges, spring strain)"});
     result.results.push_back({"energy_balance_residual", residual, "J",
                               "dKE + dPE - (sources - loads - dissipated): the integration error"});
     result.results.push_back({"energy_balance_relative", residual / scale, "1",
                               "the residual over the largest energy of the run"});
+    // Each flow by name, so the parts of every sum can be read (and add up).
+    result.results.insert(result.results.end(), parts.begin(), parts.end());
 }
 
 void addDefaultPlots(AnalysisResult& result) {

@@ -46,6 +46,11 @@ struct AnalysisResult {
     /// Values the elements derive from their parameters (Scene::addDerivedValue).
     std::vector<ResultScalar> derived;
     std::vector<std::string> notes;  ///< what happened, in words
+    /// A transient's start verdict: "completed", "stalled", "unfinished"
+    /// (empty: no start was simulated), and the sentence that says why
+    /// with the numbers. A run whose start stalled exits 3.
+    std::string verdict;
+    std::string verdictText;
     RunStatistics statistics;
     /// The columns worth a plot (indices into columnNames) and their titles.
     std::vector<std::pair<std::string, std::vector<std::size_t>>> plots;

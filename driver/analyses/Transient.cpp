@@ -6,9 +6,132 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace milldyn {
+namespace {
+
+std::string probeNames(const Scene& scene, ProbeRole role) {
+    std::string out;
+    for (const auto& p : scene.probes())
+        if (p.role == role) out += (out.empty() ? "" : ", ") + p.name;
+    return out.empty() ? "none" : out;
+}
+
+std::string fmt(double v) {
+    std::ostringstream o;
+    o << std::setprecision(4) << v;
+    return o.str();
+}
+
+/**
+ * The start verdict over the samples up to the first switch-off (the start
+ * window); returns whether the speed was held (also for a run that does not
+ * start from rest, which gets no verdict). The reference speed ω_ref is the drives' rated speed referred
+ * to speed_body (Scene::speedHints; the final speed if no drive hints one).
+ * The speed is *held* when every sample of the last hold_time of the
+ * window lies within start_tolerance·ω_ref of the window's last speed ω_e,
+ * and its mean drift over that time, continued for another hold_time,
+ * would not leave that band.
+ *   completed:  held and ω_e >= stall_fraction·ω_ref
+ *   stalled:    held and ω_e <  stall_fraction·ω_ref, and not still gaining
+ *               speed over the second half of the run at >= a tenth of its
+ *               mean rate since the start (the
+ *               drive cannot take the load past this speed; the torques
+ *               there are given)
+ *   unfinished: not held (still accelerating, or oscillating) when the
+ *               window ended
+ */
+bool judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body, std::size_t col, double switchTime,
+                bool fromRest, AnalysisResult& result) {
+    const ElementSpec& sc = spec.scenario;
+    std::vector<const std::vector<double>*> window;
+    for (const auto& row : result.rows)
+        if (row[0] <= switchTime) window.push_back(&row);
+    if (window.empty()) return false;
+    const double tEnd = window.back()->at(0), wEnd = window.back()->at(col);
+    const auto hints = scene.speedHints();
+    const auto hint = hints.find(body.name);
+    const bool hinted = hint != hints.end() && hint->second > 0;
+    const double wRef = hinted ? hint->second : std::abs(wEnd);
+    const double tol = sc.number("start_tolerance");
+    const double hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (tEnd - window.front()->at(0));
+    const double band = tol * wRef;
+    bool held = window.front()->at(0) <= tEnd - hold && wRef > 0;
+    double worst = 0;
+    for (const auto* row : window)
+        if (row->at(0) >= tEnd - hold) worst = std::max(worst, std::abs(row->at(col) - wEnd));
+    // Held also means not drifting out: at the window's mean rate the speed
+    // must stay in the band for another hold window.
+    const double tWindow = std::max(tEnd - hold, window.front()->at(0));
+    double wWindow = wEnd;
+    for (const auto* row : window)
+        if (row->at(0) >= tWindow) {
+            wWindow = row->at(col);
+            break;
+        }
+    const double drift = hold > 0 ? std::abs(wEnd - wWindow) / hold : 0;
+    const double elapsed = tEnd - window.front()->at(0);
+    held = held && worst <= band && drift * hold <= band;
+    // A stall is an equilibrium: below the started speed a shaft that
+    // gained speed over the second half of the run at >= a tenth of its mean
+    // rate since the start is not stalled but slow (its start is
+    // unfinished). Half the run, not the hold window: a belt mode rings
+    // through a short window.
+    const double meanRate = elapsed > 0 ? std::abs(wEnd - window.front()->at(col)) / elapsed : 0;
+    const double tMid = window.front()->at(0) + 0.5 * elapsed;
+    double wMid = wEnd, tMidSample = tEnd;
+    for (const auto* row : window)
+        if (row->at(0) >= tMid) {
+            wMid = row->at(col);
+            tMidSample = row->at(0);
+            break;
+        }
+    const bool stillRising = tEnd > tMidSample && (wEnd - wMid) / (tEnd - tMidSample) > 0.1 * meanRate;
+    if (!fromRest) return held;  // no start to judge: only whether the end is steady
+    const double fraction = sc.number("stall_fraction");
+    const std::string ref = hinted ? "the drives' running speed " + fmt(wRef) + " rad/s referred to " + body.name
+                                   : "its final speed (no drive hints a rated speed)";
+    const std::string holdText = "within ±" + fmt(band) + " rad/s (" + fmt(tol * 100) + " % of ω_ref) for the last " +
+                                 fmt(hold) + " s before " + (tEnd >= switchTime ? "switch-off" : "the end");
+    const double wRpm = wEnd * 30 / SimTK::Pi;
+    if (held && std::abs(wEnd) >= fraction * wRef) {
+        result.verdict = "completed";
+        result.verdictText = "start completed: " + body.name + " held " + fmt(wEnd) + " rad/s (" + fmt(wRpm) + " rpm) " +
+                             holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref;
+    } else if (held && !stillRising) {
+        result.verdict = "stalled";
+        // Drive and load torques at the last sample of the window.
+        std::string drive, load;
+        for (std::size_t i = 0; i < scene.probes().size(); ++i) {
+            const Probe& p = scene.probes()[i];
+            const double v = window.back()->at(1 + 2 * scene.bodies().size() + i);
+            if (p.role == ProbeRole::DriveTorque) drive += (drive.empty() ? "" : ", ") + p.name + " = " + fmt(v) + " N*m";
+            if (p.role == ProbeRole::ResistanceTorque)
+                load += (load.empty() ? "" : ", ") + p.name + " = " + fmt(v) + " N*m";
+        }
+        result.verdictText = "start stalled: " + body.name + " held " + fmt(wEnd) + " rad/s (" + fmt(wRpm) + " rpm, " +
+                             fmt(100 * wEnd / wRef) + " % of " + ref + ") " + holdText + ", below the " +
+                             fmt(fraction * 100) + " % that counts as started; there the drive torque is " +
+                             (drive.empty() ? "none" : drive) + " against the load torque " +
+                             (load.empty() ? "none" : load) +
+                             " (each on its own shaft): the drive cannot take the load past this speed";
+    } else {
+        result.verdict = "unfinished";
+        result.verdictText = "start unfinished: " + body.name + " was at " + fmt(wEnd) + " rad/s (" + fmt(wRpm) +
+                             " rpm) at " + fmt(tEnd) + " s and not held " + holdText + " (it moved by up to " +
+                             fmt(worst) + " rad/s): no start time or steady values are given; lengthen end_time";
+    }
+    result.results.push_back({"start_completed", result.verdict == "completed" ? 1.0 : 0.0, "1",
+                              "1 if the start completed (see verdict), else 0"});
+    return held;
+}
+
+}  // namespace
 
 AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     const ElementSpec& sc = spec.scenario;
@@ -93,14 +216,29 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     const double omega = pinSpeed(steady, speedBody.mobod);
     const bool switched = switchTime < endTime;
     const std::string at = switched ? "just before switch-off" : "at the end of the run";
-    result.results.push_back({"steady_speed", omega, "rad/s", "speed of " + speedBody.name + " " + at});
-    result.results.push_back({"resistance_torque", sumProbes(*scene, steady, ProbeRole::ResistanceTorque), "N*m",
-                              "sum of load torques " + at});
-    result.results.push_back({"power", sumProbes(*scene, steady, ProbeRole::ResistancePower), "W",
+
+    // The start verdict (from rest only): over the samples before switch-off.
+    const std::size_t speedCol = table.column(speedColumnName(*scene, speedBody));
+    if (start == "rest") judgeStart(*scene, spec, speedBody, speedCol, switchTime, true, result);
+    // A start that did not complete has no steady values. (A run from a
+    // given or steady state keeps the names: what it ends in is the user's
+    // question, e.g. a braked run-out's end speed.)
+    const bool reached = start != "rest" || result.verdict == "completed";
+    // A start that did not complete has no steady values: its numbers are
+    // what the shafts did at the end of the start window.
+    const std::string suffix = reached ? "" : "_at_end";
+    result.results.push_back({reached ? "steady_speed" : "speed_at_end", omega, "rad/s",
+                              "speed of " + speedBody.name + " " + at});
+    result.results.push_back({"resistance_torque" + suffix, sumProbes(*scene, steady, ProbeRole::ResistanceTorque),
+                              "N*m", "sum of load torques " + at + ", each on its own shaft (" +
+                                         probeNames(*scene, ProbeRole::ResistanceTorque) + ")"});
+    result.results.push_back({"power" + suffix, sumProbes(*scene, steady, ProbeRole::ResistancePower), "W",
                               "power absorbed by the loads " + at});
-    result.results.push_back({"drive_torque", sumProbes(*scene, steady, ProbeRole::DriveTorque), "N*m",
-                              "sum of drive torques " + at});
-    result.results.push_back({"peak_drive_torque", peakDrive, "N*m", "largest drive torque of the run"});
+    result.results.push_back({"drive_torque" + suffix, sumProbes(*scene, steady, ProbeRole::DriveTorque), "N*m",
+                              "sum of drive torques " + at + ", each on its own shaft (" +
+                                  probeNames(*scene, ProbeRole::DriveTorque) + ")"});
+    result.results.push_back({"peak_drive_torque", peakDrive, "N*m",
+                              "largest drive torque of the run (" + probeNames(*scene, ProbeRole::DriveTorque) + ")"});
     // Couplings sit on shafts of different speeds: one peak each.
     for (std::size_t i = 0; i < scene->probes().size(); ++i)
         if (scene->probes()[i].role == ProbeRole::CouplingTorque) {
@@ -108,10 +246,9 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             result.results.push_back({"peak." + name, peakCoupling[i], "N*m",
                                       "largest |" + name + "| of the run (on its from-shaft)"});
         }
-    if (start == "rest" && omega > 0) {
-        const std::size_t col = table.column(speedColumnName(*scene, speedBody));
+    if (start == "rest" && omega > 0 && reached) {
         for (const auto& row : result.rows)
-            if (row[col] >= 0.95 * omega) {
+            if (row[speedCol] >= 0.95 * omega) {
                 result.results.push_back({"start_time", row[0], "s",
                                           "first sample at 95 % of the steady speed of " + speedBody.name});
                 break;

@@ -38,6 +38,7 @@ std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& resul
     nlohmann::ordered_json j;
     j["model"] = {{"name", spec.name}, {"file", spec.file}, {"format_version", spec.formatVersion}};
     j["analysis"] = result.analysis;
+    if (!result.verdict.empty()) j["verdict"] = {{"status", result.verdict}, {"reason", result.verdictText}};
     nlohmann::ordered_json results = nlohmann::ordered_json::object();
     for (const auto& r : result.results)
         results[r.name] = {{"value", r.value}, {"unit", r.unit}, {"description", r.doc}};

@@ -2,57 +2,56 @@
 
 #include "plugins/scene/ElementRegistry.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <sstream>
+#include <utility>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
 namespace milldyn {
-namespace {
-
-[[noreturn]] void badParameter(const std::string& name, double value, const std::string& rule) {
-    throw std::invalid_argument("InductionMotor: " + name + " = " + std::to_string(value) +
-                                " is invalid: " + rule);
-}
-
-}  // namespace
 
 InductionMotor::InductionMotor(const SimTK::GeneralForceSubsystem& forces,
                                const SimTK::MobilizedBody& shaft, const InductionMotorParams& p)
-    : m_forces(forces), m_shaft(shaft), m_params(p) {
-    auto finite = [](double v) { return std::isfinite(v); };
-    if (!(finite(p.ratedTorque) && p.ratedTorque > 0)) badParameter("rated_torque", p.ratedTorque, "must be finite and > 0");
-    if (!(finite(p.synchronousSpeed) && p.synchronousSpeed > 0))
-        badParameter("synchronous_speed", p.synchronousSpeed, "must be finite and > 0");
-    if (!(p.ratedSpeed > 0 && p.ratedSpeed < p.synchronousSpeed))
-        badParameter("rated_speed", p.ratedSpeed, "must lie in (0, synchronous_speed)");
-    if (!finite(p.breakdownRatio)) badParameter("breakdown_ratio", p.breakdownRatio, "must be finite");
-    if (p.law == InductionMotorParams::Law::Kloss && !(p.breakdownRatio > 1))
-        badParameter("breakdown_ratio", p.breakdownRatio, "must be > 1 for the Kloss law");
-    if (!(finite(p.linearStallTorque) && p.linearStallTorque >= 0))
-        badParameter("linear_stall_torque", p.linearStallTorque, "must be finite and >= 0");
-    if (!(finite(p.linearSlope) && p.linearSlope >= 0)) badParameter("linear_slope", p.linearSlope, "must be finite and >= 0");
-    if (std::isnan(p.switchOffTime)) badParameter("switch_off_time", p.switchOffTime, "is NaN");
-
-    const double slipSpeed = p.synchronousSpeed - p.ratedSpeed;
-    if (p.linearStallTorque > 0 && p.linearSlope > 0) {
-        m_M00 = p.linearStallTorque;
-        m_b0 = p.linearSlope;
-    } else {
-        m_M00 = p.ratedTorque * p.synchronousSpeed / slipSpeed;  // eq (4)
-        m_b0 = p.ratedTorque / slipSpeed;                         // eq (4)
-    }
-    m_slipRated = slipSpeed / p.synchronousSpeed;
-    const double lambda = p.breakdownRatio;
-    m_slipBreakdown = m_slipRated * (lambda + std::sqrt(std::max(0.0, lambda * lambda - 1)));
+    : m_forces(forces), m_shaft(shaft), m_params(p), m_curve(p), m_starter(p.starter) {
+    if (std::isnan(p.switchOffTime))
+        throw std::invalid_argument("InductionMotor: switch_off_time is NaN");
 }
 
-double InductionMotor::torqueAtSpeed(double omega) const {
-    if (m_params.law == InductionMotorParams::Law::Linear) return m_M00 - m_b0 * omega;  // eq (3)
-    const double s = (m_params.synchronousSpeed - omega) / m_params.synchronousSpeed;
-    const double sk = m_slipBreakdown;
-    const double Mk = m_params.breakdownRatio * m_params.ratedTorque;
-    // 2Mk/(s/sk + sk/s) written without the division by s, so s = 0 is fine.
-    return 2 * Mk * s * sk / (s * s + sk * sk);
+double InductionMotor::torqueAtSpeed(double omega, const SupplyState& u) const {
+    const double wc = m_params.synchronousSpeed;
+    const double slipSpeed = u.frequency * wc - omega;
+    const double M = u.connection * u.voltage * u.voltage * m_curve.torque(wc - slipSpeed / u.resistance);
+    return std::max(-u.torqueLimit, std::min(u.torqueLimit, M));
+}
+
+double InductionMotor::currentAtSpeed(double omega, const SupplyState& u) const {
+    const double wc = m_params.synchronousSpeed;
+    const double slipSpeed = u.frequency * wc - omega;
+    return u.connection * u.voltage * m_curve.current(wc - slipSpeed / u.resistance);
+}
+
+SupplyState InductionMotor::supply(const SimTK::State& state) const {
+    return m_starter.supply(state.getTime(), getStarterStep(state));
+}
+
+double InductionMotor::calcSlipSpeed(const SimTK::State& state) const {
+    return supply(state).frequency * m_params.synchronousSpeed - m_shaft.getOneU(state, SimTK::MobilizerUIndex(0));
+}
+
+double InductionMotor::calcCurrent(const SimTK::State& state) const {
+    if (!isOn(state)) return 0;
+    return currentAtSpeed(m_shaft.getOneU(state, SimTK::MobilizerUIndex(0)), supply(state));
+}
+
+int InductionMotor::getStarterStep(const SimTK::State& state) const {
+    return SimTK::Value<int>::downcast(m_forces.getDiscreteVariable(state, m_stepIndex));
+}
+
+void InductionMotor::setStarterStep(SimTK::State& state, int step) const {
+    SimTK::Value<int>::updDowncast(m_forces.updDiscreteVariable(state, m_stepIndex)) = step;
 }
 
 bool InductionMotor::isOn(const SimTK::State& state) const {
@@ -65,7 +64,7 @@ void InductionMotor::setOn(SimTK::State& state, bool on) const {
 
 double InductionMotor::calcTorque(const SimTK::State& state) const {
     if (!isOn(state)) return 0;
-    return torqueAtSpeed(m_shaft.getOneU(state, SimTK::MobilizerUIndex(0)));
+    return torqueAtSpeed(m_shaft.getOneU(state, SimTK::MobilizerUIndex(0)), supply(state));
 }
 
 void InductionMotor::calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>&,
@@ -78,22 +77,182 @@ void InductionMotor::realizeTopology(SimTK::State& state) const {
     // A switch-off changes forces, so the variable invalidates Dynamics.
     m_onIndex = m_forces.allocateDiscreteVariable(state, SimTK::Stage::Dynamics,
                                                   new SimTK::Value<bool>(true));
+    m_stepIndex = m_forces.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<int>(0));
 }
 
 namespace {
 
+using Law = TorqueSpeedCurveParams::Law;
+using StarterKind = StarterParams::Kind;
+
+const std::vector<std::pair<std::string, Law>> kLaws = {
+    {"kloss", Law::Kloss}, {"linear", Law::Linear}, {"catalogue", Law::Catalogue}, {"table", Law::Table}};
+const std::vector<StarterKind> kStarters = {StarterKind::DirectOnLine,       StarterKind::StarDelta,
+                                            StarterKind::SoftStart,          StarterKind::FrequencyConverter,
+                                            StarterKind::RotorResistance,    StarterKind::LiquidResistance};
+
+Law lawOf(const std::string& word) {
+    for (const auto& [name, law] : kLaws)
+        if (name == word) return law;
+    return Law::Kloss;
+}
+
+StarterKind starterOf(const std::string& word) {
+    for (StarterKind k : kStarters)
+        if (Starter::kindName(k) == word) return k;
+    return StarterKind::DirectOnLine;
+}
+
+// The keys only some laws or starters use: giving one to another is an error
+// (the linear law's printed M00/b0 stay allowed with any law, as before:
+// the burr-mill files carry them for a --set law=linear).
+const std::map<std::string, std::vector<std::string>> kLawKeys = {
+    {"catalogue", {"locked_rotor_ratio", "pull_up_ratio", "pull_up_speed", "breakdown_speed"}},
+    {"table", {"curve_speeds", "curve_torques", "curve_currents"}},
+};
+const std::map<std::string, std::vector<std::string>> kStarterKeys = {
+    {"star_delta", {"switch_times", "switch_speeds"}},
+    {"soft_start", {"initial_voltage", "ramp_time"}},
+    {"frequency_converter", {"initial_frequency", "ramp_time", "torque_limit"}},
+    {"rotor_resistance", {"switch_times", "switch_speeds", "resistance_ratios"}},
+    {"liquid_resistance", {"initial_resistance_ratio", "ramp_time"}},
+};
+
+void rejectKeysOfOthers(const ElementSpec& e, const std::string& chosenKey,
+                        const std::map<std::string, std::vector<std::string>>& keysOf) {
+    const std::string& chosen = e.text(chosenKey);
+    for (const auto& [owner, keys] : keysOf) {
+        if (owner == chosen) continue;
+        for (const auto& k : keys) {
+            const auto mine = keysOf.find(chosen);
+            const bool alsoMine = mine != keysOf.end() &&
+                                  std::find(mine->second.begin(), mine->second.end(), k) != mine->second.end();
+            if (e.has(k) && !alsoMine)
+                throw e.error(k, "not used with " + chosenKey + " " + chosen + " (only with " + chosenKey + " " + owner +
+                                     ")");
+        }
+    }
+}
+
+std::string num(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
+void checkIncreasing(const ElementSpec& e, const std::string& key, const std::string& what) {
+    const std::vector<double>& v = e.numbers(key);
+    for (std::size_t i = 1; i < v.size(); ++i)
+        if (!(v[i] > v[i - 1]))
+            throw e.error(key, what + " must increase strictly: item " + std::to_string(i + 1) + " (" + num(v[i]) +
+                                   ") is not above item " + std::to_string(i) + " (" + num(v[i - 1]) + ")");
+}
+
+void crossCheckInductionMotor(const ElementSpec& e) {
+    const double wn = e.number("rated_speed"), wc = e.number("synchronous_speed");
+    if (wn >= wc)
+        throw e.error("rated_speed", "rated speed must be below the synchronous speed (" + std::to_string(wn) +
+                                         " rad/s >= " + std::to_string(wc) + " rad/s)");
+    if (e.has("linear_stall_torque") != e.has("linear_slope"))
+        throw e.error(e.has("linear_slope") ? "linear_slope" : "linear_stall_torque",
+                      "give both linear_stall_torque and linear_slope, or neither");
+    rejectKeysOfOthers(e, "law", kLawKeys);
+    rejectKeysOfOthers(e, "starter", kStarterKeys);
+    const std::string law = e.text("law");
+    if (law == "catalogue") {
+        if (!e.has("locked_rotor_ratio")) throw e.error("law", "the catalogue law needs locked_rotor_ratio");
+        const double lambda = e.number("breakdown_ratio");
+        const double sn = (wc - wn) / wc;
+        const double wk = e.has("breakdown_speed") ? e.number("breakdown_speed")
+                                                   : wc * (1 - sn * (lambda + std::sqrt(lambda * lambda - 1)));
+        if (!(wk < wn))
+            throw e.error(e.has("breakdown_speed") ? "breakdown_speed" : "breakdown_ratio",
+                          "the breakdown speed (" + num(wk) + " rad/s) must be below the rated speed (" + num(wn) +
+                              " rad/s)");
+        if (!(wk > 0))
+            throw e.error("breakdown_ratio", "the Kloss breakdown slip of this ratio puts the breakdown speed at " +
+                                                 num(wk) + " rad/s; give breakdown_speed");
+        if (e.number("locked_rotor_ratio") > lambda)
+            throw e.error("locked_rotor_ratio", "locked-rotor torque above the breakdown torque (" +
+                                                    num(e.number("locked_rotor_ratio")) + " > " + num(lambda) + ")");
+        if (e.has("pull_up_ratio") != e.has("pull_up_speed"))
+            throw e.error(e.has("pull_up_ratio") ? "pull_up_ratio" : "pull_up_speed",
+                          "give both pull_up_ratio and pull_up_speed, or neither");
+        if (e.has("pull_up_speed")) {
+            if (!(e.number("pull_up_speed") < wk))
+                throw e.error("pull_up_speed", "the pull-up point must lie below the breakdown speed (" + num(wk) +
+                                                   " rad/s)");
+            if (e.number("pull_up_ratio") > std::min(lambda, e.number("locked_rotor_ratio")))
+                throw e.error("pull_up_ratio", "the pull-up torque is the curve's minimum below breakdown: it "
+                                               "cannot exceed the locked-rotor or breakdown ratio");
+        }
+    }
+    if (law == "table") {
+        if (!e.has("curve_speeds") || !e.has("curve_torques"))
+            throw e.error("law", "the table law needs curve_speeds and curve_torques");
+        checkIncreasing(e, "curve_speeds", "torque-speed points");
+        const std::size_t n = e.numbers("curve_speeds").size();
+        for (const char* k : {"curve_torques", "curve_currents"})
+            if (e.has(k) && e.numbers(k).size() != n)
+                throw e.error(k, "give one value per speed in curve_speeds (" + std::to_string(n) + "), got " +
+                                     std::to_string(e.numbers(k).size()));
+        if (e.numbers("curve_speeds").back() > wc)
+            throw e.error("curve_speeds", "speeds must not exceed the synchronous speed (" + num(wc) + " rad/s)");
+    }
+    const std::string starter = e.text("starter");
+    if (e.has("switch_times") && e.has("switch_speeds"))
+        throw e.error("switch_speeds", "give switch_times or switch_speeds, not both");
+    for (const char* k : {"switch_times", "switch_speeds"})
+        if (e.has(k)) checkIncreasing(e, k, "switchings");
+    const std::size_t switches = e.numbers("switch_times").size() + e.numbers("switch_speeds").size();
+    if (starter == "star_delta" && switches != 1)
+        throw e.error("starter", "star_delta switches once: give one switch_times or one switch_speeds item");
+    if (starter == "rotor_resistance") {
+        if (!e.has("resistance_ratios")) throw e.error("starter", "rotor_resistance needs resistance_ratios");
+        if (switches != e.numbers("resistance_ratios").size())
+            throw e.error("resistance_ratios", "give one switching per resistance step (" +
+                                                   std::to_string(e.numbers("resistance_ratios").size()) +
+                                                   " steps, " + std::to_string(switches) + " switchings)");
+        const std::vector<double>& r = e.numbers("resistance_ratios");
+        for (std::size_t i = 1; i < r.size(); ++i)
+            if (!(r[i] < r[i - 1]))
+                throw e.error("resistance_ratios", "resistance steps must decrease: item " + std::to_string(i + 1) +
+                                                       " (" + num(r[i]) + ") is not below item " + std::to_string(i));
+    }
+    if ((starter == "soft_start" || starter == "frequency_converter" || starter == "liquid_resistance") &&
+        !(e.number("ramp_time") > 0))
+        throw e.error(e.has("ramp_time") ? "ramp_time" : "starter",
+                      "a ramp of zero length: " + starter + " needs ramp_time > 0");
+}
+
 void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     const SceneBody* shaft = scene.findBody(spec.text("body"));
     InductionMotorParams p;
-    p.law = spec.text("law") == "linear" ? InductionMotorParams::Law::Linear
-                                         : InductionMotorParams::Law::Kloss;
+    p.law = lawOf(spec.text("law"));
     p.ratedTorque = spec.number("rated_torque");
     p.ratedSpeed = spec.number("rated_speed");
     p.synchronousSpeed = spec.number("synchronous_speed");
     p.breakdownRatio = spec.number("breakdown_ratio");
     p.linearStallTorque = spec.number("linear_stall_torque");
     p.linearSlope = spec.number("linear_slope");
+    p.lockedRotorRatio = spec.number("locked_rotor_ratio");
+    p.pullUpRatio = spec.number("pull_up_ratio");
+    p.pullUpSpeed = spec.number("pull_up_speed");
+    p.breakdownSpeed = spec.number("breakdown_speed");
+    p.tableSpeeds = spec.numbers("curve_speeds");
+    p.tableTorques = spec.numbers("curve_torques");
+    p.tableCurrents = spec.numbers("curve_currents");
     p.switchOffTime = spec.number("switch_off_time");
+    StarterParams& st = p.starter;
+    st.kind = starterOf(spec.text("starter"));
+    st.switchTimes = spec.numbers("switch_times");
+    st.switchSpeeds = spec.numbers("switch_speeds");
+    st.resistanceRatios = spec.numbers("resistance_ratios");
+    st.initialVoltage = spec.number("initial_voltage");
+    st.initialFrequency = spec.number("initial_frequency");
+    st.initialResistanceRatio = spec.number("initial_resistance_ratio");
+    st.rampTime = spec.number("ramp_time");
+    st.torqueLimit = spec.number("torque_limit");
 
     auto* impl = new InductionMotor(scene.forces(), shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);  // Simbody owns impl
@@ -102,19 +261,72 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     if (std::isfinite(p.switchOffTime))
         scene.addSwitchEvent({Scene::SwitchEvent::Kind::DriveOff, p.switchOffTime, spec.name + " switched off",
                               [impl](SimTK::State& s) { impl->setOn(s, false); }});
+    const std::string starterName = Starter::kindName(st.kind);
+    for (std::size_t i = 0; i < st.switchTimes.size(); ++i) {
+        const int step = static_cast<int>(i) + 1;
+        scene.addSwitchEvent({Scene::SwitchEvent::Kind::StarterStep, st.switchTimes[i],
+                              spec.name + " " + starterName + " step " + std::to_string(step),
+                              [impl, step](SimTK::State& s) { impl->setStarterStep(s, step); }});
+    }
+    const SimTK::MobilizedBody mobod = shaft->mobod;
+    if (!st.switchSpeeds.empty()) {
+        // A switch at a speed: the step is a value kept between steps,
+        // advanced after the first accepted step past the speed.
+        const std::vector<double> speeds = st.switchSpeeds;
+        scene.addLaggedValue({spec.name + ".starter_step", true,
+                              [impl, mobod, speeds](const SimTK::State& s) {
+                                  int step = impl->getStarterStep(s);
+                                  while (step < static_cast<int>(speeds.size()) &&
+                                         pinSpeed(s, mobod) >= speeds[static_cast<std::size_t>(step)])
+                                      ++step;
+                                  return static_cast<double>(step);
+                              },
+                              [impl](SimTK::State& s, double v) {
+                                  const int old = impl->getStarterStep(s);
+                                  impl->setStarterStep(s, static_cast<int>(v));
+                                  return std::abs(v - old);
+                              }});
+    }
     // Slightly below synchronous: where every motor law has its stable branch.
     scene.addSpeedHint(shaft->name, p.ratedSpeed);
-    const SimTK::MobilizedBody mobod = shaft->mobod;
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::DriveTorque, SimTK::Stage::Dynamics,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
     scene.addProbe({spec.name + ".power", "W", ProbeRole::Generic, SimTK::Stage::Dynamics,
-                    [impl, mobod](const SimTK::State& s) {
-                        return impl->calcTorque(s) * pinSpeed(s, mobod);
-                    }});
-    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source, [impl, mobod](const SimTK::State& s) {
-                             return impl->calcTorque(s) * pinSpeed(s, mobod);
-                         }});
-    scene.note("force " + spec.name + " (InductionMotor, " + spec.text("law") + ")",
+                    [impl, mobod](const SimTK::State& s) { return impl->calcTorque(s) * pinSpeed(s, mobod); }});
+    scene.addProbe({spec.name + ".rotor_loss", "W", ProbeRole::Generic, SimTK::Stage::Dynamics,
+                    [impl](const SimTK::State& s) { return impl->calcTorque(s) * impl->calcSlipSpeed(s); }});
+    if (impl->curve().hasCurrent())
+        scene.addProbe({spec.name + ".current", "A", ProbeRole::Generic, SimTK::Stage::Dynamics,
+                        [impl](const SimTK::State& s) { return impl->calcCurrent(s); }});
+    const double wc = p.synchronousSpeed;
+    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source,
+                         [impl, wc](const SimTK::State& s) {
+                             return impl->calcTorque(s) * impl->supply(s).frequency * wc;
+                         },
+                         "air-gap power of " + spec.name + " (electrical input less stator losses, not modelled)"});
+    scene.addEnergyFlow({spec.name + ".rotor_heat", EnergyFlow::Kind::Dissipation,
+                         [impl](const SimTK::State& s) { return impl->calcTorque(s) * impl->calcSlipSpeed(s); },
+                         "heat in the rotor circuit of " + spec.name + " (and its starting resistance): M·(f·ωc − ω)"});
+
+    const TorqueSpeedCurve& c = impl->curve();
+    scene.addDerivedValue({spec.name + ".rated_slip", c.ratedSlip(), "1", "sn = (ωc − ωn)/ωc"});
+    if (p.law == Law::Linear) {
+        scene.addDerivedValue({spec.name + ".linear_stall_torque", c.linearStallTorque(), "N*m",
+                               "M00 of the linear law M = M00 − b0·ω (seed 003 eq 4 or as printed)"});
+        scene.addDerivedValue({spec.name + ".linear_slope", c.linearSlope(), "N*m*s/rad", "b0 of the linear law"});
+    }
+    if (p.law == Law::Kloss)
+        scene.addDerivedValue({spec.name + ".breakdown_slip", c.breakdownSlip(), "1", "Kloss sk = sn·(λ + √(λ² − 1))"});
+    if (!c.pointSpeeds().empty()) {
+        // The monotone cubic's maximum lies on a data point (no overshoot).
+        const auto& T = c.pointTorques();
+        const std::size_t k = static_cast<std::size_t>(std::max_element(T.begin(), T.end()) - T.begin());
+        scene.addDerivedValue({spec.name + ".locked_rotor_torque", c.torque(0), "N*m", "curve torque at standstill"});
+        scene.addDerivedValue({spec.name + ".breakdown_torque", T[k], "N*m", "largest torque of the curve"});
+        scene.addDerivedValue({spec.name + ".breakdown_speed", c.pointSpeeds()[k], "rad/s",
+                               "speed of the largest torque"});
+    }
+    scene.note("force " + spec.name + " (InductionMotor, " + spec.text("law") + ", " + starterName + ")",
                "drives body " + shaft->name);
 }
 
@@ -123,36 +335,56 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
 void registerInductionMotor(ElementRegistry& registry) {
     ElementSchema s;
     s.type = "InductionMotor";
-    s.doc = "Asynchronous motor torque on a shaft: linear working branch (seed 003 eqs 3-4) or "
-            "Kloss curve; optional switch-off time.";
+    s.doc = "Asynchronous motor torque on a shaft: linear working branch (seed 003 eqs 3-4), Kloss curve, "
+            "catalogue points or a torque-speed table (monotone cubic); starters direct-on-line, star-delta, "
+            "soft start, frequency converter, slip-ring rotor resistance steps or liquid resistance; optional "
+            "switch-off time.";
     using P = ParamSchema;
     const double never = std::numeric_limits<double>::infinity();
+    std::vector<std::string> laws, starters;
+    for (const auto& l : kLaws) laws.push_back(l.first);
+    for (StarterKind k : kStarters) starters.push_back(Starter::kindName(k));
     s.params = {
         P::body("body", "shaft the motor drives"),
-        P::choice("law", {"kloss", "linear"}, "torque-speed law").optional("kloss"),
+        P::choice("law", laws, "torque-speed law").optional("kloss"),
         P::quantity("rated_torque", "N*m", "nameplate torque Mn").above(0),
         P::quantity("rated_speed", "rad/s", "nameplate speed ωn, below synchronous").above(0),
         P::quantity("synchronous_speed", "rad/s", "synchronous speed ωc").above(0),
-        P::quantity("breakdown_ratio", "1", "Kloss: breakdown over rated torque λ")
+        P::quantity("breakdown_ratio", "1", "Kloss, catalogue: breakdown over rated torque λ")
             .optional(2.2).above(1).atMost(10),
-        P::quantity("linear_stall_torque", "N*m", "linear law: printed M00 (0: eq 4)")
-            .optional(0.0).atLeast(0),
-        P::quantity("linear_slope", "N*m*s/rad", "linear law: printed b0 (0: eq 4)")
-            .optional(0.0).atLeast(0),
+        P::quantity("linear_stall_torque", "N*m", "linear law: printed M00 (0: eq 4)").optional(0.0).atLeast(0),
+        P::quantity("linear_slope", "N*m*s/rad", "linear law: printed b0 (0: eq 4)").optional(0.0).atLeast(0),
+        P::quantity("locked_rotor_ratio", "1", "catalogue: locked-rotor over rated torque").optional(0.0).above(0).atMost(10),
+        P::quantity("pull_up_ratio", "1", "catalogue: pull-up (minimum) over rated torque").optional(0.0).above(0).atMost(10),
+        P::quantity("pull_up_speed", "rad/s", "catalogue: speed of the pull-up torque").optional(0.0).above(0),
+        P::quantity("breakdown_speed", "rad/s", "catalogue: speed of the breakdown torque (default from Kloss sk)")
+            .optional(0.0).above(0),
+        P::quantityList("curve_speeds", "rad/s", 2, 200, "table: speeds, strictly increasing").optional(0.0).atLeast(0),
+        P::quantityList("curve_torques", "N*m", 2, 200, "table: torques at curve_speeds").optional(0.0),
+        P::quantityList("curve_currents", "A", 2, 200, "table: line currents at curve_speeds").optional(0.0).atLeast(0),
+        P::choice("starter", starters, "how the motor is started").optional("direct_on_line"),
+        P::quantityList("switch_times", "s", 1, 20, "star_delta, rotor_resistance: switching times").optional(0.0).above(0),
+        P::quantityList("switch_speeds", "rad/s", 1, 20, "star_delta, rotor_resistance: switching shaft speeds")
+            .optional(0.0)
+            .above(0),
+        P::quantityList("resistance_ratios", "1", 1, 20, "rotor_resistance: R/R_rotor of each step, decreasing")
+            .optional(0.0)
+            .above(1),
+        P::quantity("initial_voltage", "1", "soft_start: initial voltage over rated").optional(0.3).above(0).atMost(1),
+        P::quantity("initial_frequency", "1", "frequency_converter: initial frequency over rated")
+            .optional(0.0)
+            .atLeast(0)
+            .below(1),
+        P::quantity("initial_resistance_ratio", "1", "liquid_resistance: initial R/R_rotor").optional(10.0).atLeast(1),
+        P::quantity("ramp_time", "s", "soft_start, frequency_converter, liquid_resistance: ramp length")
+            .optional(0.0)
+            .atLeast(0),
+        P::quantity("torque_limit", "N*m", "frequency_converter: torque limit (default none)").optional(never).above(0),
         P::quantity("switch_off_time", "s", "supply switched off at this time (default never)")
-            .optional(never).atLeast(0),
+            .optional(never)
+            .atLeast(0),
     };
-    s.crossCheck = [](const ElementSpec& e) {
-        if (e.number("rated_speed") >= e.number("synchronous_speed"))
-            throw e.error("rated_speed", "rated speed must be below the synchronous speed (" +
-                                             std::to_string(e.number("rated_speed")) +
-                                             " rad/s >= " +
-                                             std::to_string(e.number("synchronous_speed")) +
-                                             " rad/s)");
-        if (e.has("linear_stall_torque") != e.has("linear_slope"))
-            throw e.error(e.has("linear_slope") ? "linear_slope" : "linear_stall_torque",
-                          "give both linear_stall_torque and linear_slope, or neither");
-    };
+    s.crossCheck = crossCheckInductionMotor;
     registry.add({std::move(s), buildInductionMotor});
 }
 

@@ -2,55 +2,60 @@
 // InductionMotor: the torque of an asynchronous motor on its shaft as a
 // function of shaft speed.
 
+#include "plugins/motors/Starter.h"
+#include "plugins/motors/TorqueSpeedCurve.h"
+
 #include <Simbody.h>
 
 #include <limits>
 
 namespace milldyn {
 
-/// Parameters of an InductionMotor. All SI.
-struct InductionMotorParams {
-    enum class Law { Linear, Kloss };
-    Law law = Law::Kloss;
-    /// Rated (nameplate) torque Mn [N*m], > 0.
-    double ratedTorque = 0;
-    /// Rated speed ωn [rad/s], 0 < ωn < ωc.
-    double ratedSpeed = 0;
-    /// Synchronous speed ωc [rad/s], > 0.
-    double synchronousSpeed = 0;
-    /// Breakdown torque ratio λ = Mk/Mn [-], > 1. Kloss law only.
-    double breakdownRatio = 2.2;
-    /// Linear law only: the paper's printed M00 [N*m] and b0 [N*m*s/rad].
-    /// When both are > 0 they replace the nameplate formula (3)-(4); seed
-    /// 003 prints 1010 N*m / 6.428 N*m*s for a motor whose nameplate gives
-    /// 1008 / 6.42, and Table 1 was computed with the printed pair.
-    double linearStallTorque = 0;
-    double linearSlope = 0;
+/// Parameters of an InductionMotor: its natural torque–speed law
+/// (TorqueSpeedCurveParams), its starter and a switch-off time. All SI.
+struct InductionMotorParams : TorqueSpeedCurveParams {
+    StarterParams starter;
     /// Time at which the supply is switched off [s]; +inf: never.
     double switchOffTime = std::numeric_limits<double>::infinity();
 };
 
 /**
- * Drive torque of an induction motor on one pin-jointed shaft.
+ * Drive torque of an induction motor on one pin-jointed shaft: a natural
+ * torque–speed law (TorqueSpeedCurve: linear, Kloss, catalogue points or a
+ * table) under the supply state of its Starter.
  *
  * <pre>
- *   Linear working branch, seed 003 eqs (3)-(4), seed 004 eqs (1), (15):
- *     M(ω) = M00 − b0·ω,   M00 = Mn·ωc/(ωc − ωn),   b0 = Mn/(ωc − ωn)
- *   Kloss curve (start from rest):
- *     s = (ωc − ω)/ωc,  sn = (ωc − ωn)/ωc,  sk = sn·(λ + √(λ² − 1)),
- *     M(ω) = 2·Mk·s·sk/(s² + sk²),  Mk = λ·Mn        (M(ωn) = Mn exactly)
- *   Switched off: M = 0 (setOn(state, false); the registry's builder
- *   schedules that as a Scene switch event at switch_off_time).
+ *   supply (Starter): voltage V (over rated), frequency f (over rated, V/f
+ *   constant), rotor resistance ratio r = R/R_rotor, connection factor k (1/3 in star)
+ *   slip speed      Δω = f·ωc − ω
+ *   equivalent speed on the natural curve  ω_eq = ωc − Δω/r
+ *   M(ω, t) = k·V²·M_nat(ω_eq),  clipped to |M| <= M_lim (converter)
+ *   I(ω, t) = k·V·I_nat(ω_eq)    (line current; table law with currents)
  * </pre>
+ * The torque depends on the slip speed alone at constant V/f (the stator
+ * resistance neglected, as in the Kloss law), so a converter shifts the
+ * curve by ωc·(1 − f); torque at slip s with rotor resistance r·R_rotor is
+ * the natural torque at slip s/r (the rotor circuit sees R_rotor/s), so
+ * for Kloss sk ∝ R with the breakdown torque unchanged.
+ *
+ * Power: the air-gap power P_ag = M·f·ωc is the motor's input (an
+ * EnergyFlow source); the rotor circuit (and its starting resistance)
+ * turns P_ag − M·ω = M·Δω into heat (a dissipation "NAME.rotor_heat"), so
+ * a direct-on-line start of a pure inertia J to ωc dissipates ½·J·ωc² in
+ * the rotor whatever the curve. Stator copper and iron losses are not
+ * modelled. Switched off: M = 0 (the builder schedules that as a Scene
+ * switch event at switch_off_time). Starter steps are a discrete state:
+ * switched at a time (a Scene switch event the integrator restarts at) or
+ * at a speed (a kept value refreshed after each accepted step: the switch
+ * lands at the end of the first step past the speed, and the integrator
+ * restarts there).
  *
  * The shaft gets +M as a mobility force about its pin axis; the reaction on
- * the stator (ground) is not modelled. Not conservative (an energy source);
- * potential energy is 0. The linear branch reaches ≈ 28·Mn at standstill
- * for the MMP-50 motors: it is valid only near ωc, so a start from rest
- * should use Kloss. The on/off state is a discrete state variable, so a
- * switch-off is an event the integrator restarts at, not a discontinuity
- * inside a step. Checked by InductionMotorTest against the closed forms
- * above, and by the burr-mill oracle (validation/oracles/BurrMillOracle.h).
+ * the stator (ground) is not modelled. The linear branch reaches ≈ 28·Mn at
+ * standstill for the MMP-50 motors: it is valid only near ωc, so a start
+ * from rest should use Kloss, a catalogue curve or a table. Checked by
+ * InductionMotorTest and StarterTest against the closed forms above, and by
+ * the start oracle (validation/oracles/StartOracle.h).
  */
 class InductionMotor : public SimTK::Force::Custom::Implementation {
 public:
@@ -58,17 +63,31 @@ public:
     InductionMotor(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& shaft,
                    const InductionMotorParams& params);
 
-    /// Torque at shaft speed ω [rad/s] with the supply on [N*m].
-    double torqueAtSpeed(double omega) const;
+    /// Natural torque (rated supply, DOL) at shaft speed ω [rad/s] [N*m].
+    double torqueAtSpeed(double omega) const { return m_curve.torque(omega); }
+    /// Torque at shaft speed ω [rad/s] under a supply state [N*m].
+    double torqueAtSpeed(double omega, const SupplyState& supply) const;
+    /// Line current at ω under a supply state [A] (NaN without current data).
+    double currentAtSpeed(double omega, const SupplyState& supply) const;
+    /// The supply in this state (time and starter step).
+    SupplyState supply(const SimTK::State& state) const;
     /// Torque the motor applies in this state (0 when off) [N*m].
     double calcTorque(const SimTK::State& state) const;
+    /// Slip speed f·ωc − ω in this state [rad/s].
+    double calcSlipSpeed(const SimTK::State& state) const;
+    /// Line current in this state (0 when off) [A].
+    double calcCurrent(const SimTK::State& state) const;
     bool isOn(const SimTK::State& state) const;
     void setOn(SimTK::State& state, bool on) const;
+    int getStarterStep(const SimTK::State& state) const;
+    void setStarterStep(SimTK::State& state, int step) const;
 
     /// Linear-law coefficients in use: M00 [N*m], b0 [N*m*s/rad].
-    double linearStallTorque() const { return m_M00; }
-    double linearSlope() const { return m_b0; }
+    double linearStallTorque() const { return m_curve.linearStallTorque(); }
+    double linearSlope() const { return m_curve.linearSlope(); }
     const InductionMotorParams& params() const { return m_params; }
+    const TorqueSpeedCurve& curve() const { return m_curve; }
+    const Starter& starter() const { return m_starter; }
 
     void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>& particleForces,
@@ -80,12 +99,11 @@ private:
     const SimTK::GeneralForceSubsystem& m_forces;
     SimTK::MobilizedBody m_shaft;
     InductionMotorParams m_params;
-    double m_M00 = 0;
-    double m_b0 = 0;
-    double m_slipRated = 0;
-    double m_slipBreakdown = 0;
+    TorqueSpeedCurve m_curve;
+    Starter m_starter;
     // Allocated once per system in realizeTopology().
     mutable SimTK::DiscreteVariableIndex m_onIndex;
+    mutable SimTK::DiscreteVariableIndex m_stepIndex;
 };
 
 }  // namespace milldyn

@@ -16,6 +16,8 @@ void registerDiscDrag(ElementRegistry& registry);
 void registerFlexibleRotor(ElementRegistry& registry);
 void registerGearPair(ElementRegistry& registry);
 void registerShaftBearings(ElementRegistry& registry);
+void registerClutch(ElementRegistry& registry);
+void registerBrake(ElementRegistry& registry);
 
 void registerBuiltinElements(ElementRegistry& registry) {
     registerInductionMotor(registry);
@@ -32,6 +34,8 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerFlexibleRotor(registry);
     registerGearPair(registry);
     registerShaftBearings(registry);
+    registerClutch(registry);
+    registerBrake(registry);
 }
 
 }  // namespace milldyn

@@ -49,6 +49,9 @@ struct EnergyFlow {
     std::string name;
     Kind kind;
     std::function<double(const SimTK::State&)> power;
+    /// What the energy is, in words, for the summary ("heat in the rotor
+    /// circuit", "journal friction heat"); empty: said from the kind.
+    std::string what;
 };
 
 /// A body the scene holds: a shaft on a pin, rotating about its z axis.
@@ -136,7 +139,7 @@ public:
     /// Scheduled switchings (a motor switched off): the integrator stops
     /// exactly at `time`, `apply` changes the state, integration restarts.
     struct SwitchEvent {
-        enum class Kind { DriveOff, LoadOn };
+        enum class Kind { DriveOff, LoadOn, StarterStep };
         Kind kind;
         double time;
         std::string what;

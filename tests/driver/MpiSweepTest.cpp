@@ -31,7 +31,7 @@ const std::string kModel = std::string(MILLDYN_SOURCE_DIR) + "/models/burr_mill_
 const std::string kSweep = "sweep " + kModel +
                            " --grid 'elements.grinding.constant_torque=10 N*m:30 N*m:3'"
                            " --grid 'elements.belt.damping=0.1 N*m*s/rad:0.5 N*m*s/rad:2'"
-                           " --set 'scenario.end_time=0.3 s' --set outputs.plots=false";
+                           " --set 'scenario.end_time=0.3 s' --set scenario.initial_state=steady --set outputs.plots=false";
 // Root in a container needs the two ALLOW variables; 2 ranks on fewer cores
 // need --oversubscribe. Both are harmless elsewhere.
 const std::string kMpirun = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 " + kMpiexec +

@@ -400,6 +400,15 @@ ElementSpec motorSpec(double ratedSpeed, double synchronousSpeed) {
     e.params["linear_stall_torque"] = zero;
     e.params["linear_slope"] = zero;
     e.params["switch_off_time"] = number(4.0);
+    // Every other key at its default, as the model reader leaves it.
+    for (const auto& p : test::registeredType("InductionMotor").schema.params)
+        if (!e.params.count(p.key)) {
+            ParamValue v;
+            v.number = p.defaultValue.value_or(0.0);
+            v.text = p.defaultText;
+            v.given = false;
+            e.params[p.key] = v;
+        }
     return e;
 }
 
@@ -413,8 +422,14 @@ TEST(InductionMotorRegistryTest, SchemaListsTheDocumentedKeys) {
     EXPECT_EQ(keys, (std::set<std::string>{"body", "law", "rated_torque", "rated_speed",
                                            "synchronous_speed", "breakdown_ratio",
                                            "linear_stall_torque", "linear_slope",
+                                           "locked_rotor_ratio", "pull_up_ratio", "pull_up_speed",
+                                           "breakdown_speed", "curve_speeds", "curve_torques",
+                                           "curve_currents", "starter", "switch_times", "switch_speeds",
+                                           "resistance_ratios", "initial_voltage", "initial_frequency",
+                                           "initial_resistance_ratio", "ramp_time", "torque_limit",
                                            "switch_off_time"}));
-    EXPECT_EQ(schema.find("law")->choices, (std::vector<std::string>{"kloss", "linear"}));
+    EXPECT_EQ(schema.find("law")->choices, (std::vector<std::string>{"kloss", "linear", "catalogue", "table"}));
+    EXPECT_EQ(schema.find("starter")->defaultText, "direct_on_line");
     EXPECT_EQ(schema.find("law")->defaultText, "kloss");
     EXPECT_EQ(schema.find("breakdown_ratio")->defaultValue, 2.2);
     EXPECT_EQ(schema.find("rated_torque")->unit, "N*m");

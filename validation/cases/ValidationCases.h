@@ -56,5 +56,6 @@ std::vector<ValidationRow> planetaryGearCases(const std::string& filter);
 std::vector<ValidationRow> planetaryBeltCases(const std::string& filter);
 std::vector<ValidationRow> beadMillCases(const std::string& filter);
 std::vector<ValidationRow> tumblingMillCases(const std::string& filter);
+std::vector<ValidationRow> startCases(const std::string& filter);
 
 }  // namespace milldyn

@@ -1,0 +1,94 @@
+#include "plugins/motors/Starter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace milldyn {
+namespace {
+
+[[noreturn]] void badParameter(const std::string& name, double value, const std::string& rule) {
+    throw std::invalid_argument("InductionMotor starter: " + name + " = " + std::to_string(value) +
+                                " is invalid: " + rule);
+}
+
+double ramp(double from, double time, double rampTime) {
+    return from + (1 - from) * std::min(std::max(time, 0.0) / rampTime, 1.0);
+}
+
+}  // namespace
+
+Starter::Starter(const StarterParams& p) : m_params(p) {
+    using K = StarterParams::Kind;
+    if (!p.switchTimes.empty() && !p.switchSpeeds.empty())
+        badParameter("switch_speeds", p.switchSpeeds.front(), "give switch_times or switch_speeds, not both");
+    for (std::size_t i = 0; i < p.switchTimes.size(); ++i)
+        if (!(std::isfinite(p.switchTimes[i]) && p.switchTimes[i] > 0) ||
+            (i > 0 && !(p.switchTimes[i] > p.switchTimes[i - 1])))
+            badParameter("switch_times", p.switchTimes[i], "must be finite, > 0 and increasing");
+    for (std::size_t i = 0; i < p.switchSpeeds.size(); ++i)
+        if (!(std::isfinite(p.switchSpeeds[i]) && p.switchSpeeds[i] > 0) ||
+            (i > 0 && !(p.switchSpeeds[i] > p.switchSpeeds[i - 1])))
+            badParameter("switch_speeds", p.switchSpeeds[i], "must be finite, > 0 and increasing");
+    const std::size_t switches = p.switchTimes.size() + p.switchSpeeds.size();
+    if (p.kind == K::StarDelta && switches != 1)
+        badParameter("switch_times", static_cast<double>(switches), "star-delta switches once");
+    if (p.kind == K::RotorResistance) {
+        if (p.resistanceRatios.empty() || switches != p.resistanceRatios.size())
+            badParameter("resistance_ratios", static_cast<double>(p.resistanceRatios.size()),
+                         "give one ratio per switch (and at least one)");
+        for (std::size_t i = 0; i < p.resistanceRatios.size(); ++i)
+            if (!(std::isfinite(p.resistanceRatios[i]) && p.resistanceRatios[i] > 1) ||
+                (i > 0 && !(p.resistanceRatios[i] < p.resistanceRatios[i - 1])))
+                badParameter("resistance_ratios", p.resistanceRatios[i], "must be finite, > 1 and decreasing");
+    }
+    if ((p.kind == K::SoftStart || p.kind == K::FrequencyConverter || p.kind == K::LiquidResistance) &&
+        !(std::isfinite(p.rampTime) && p.rampTime > 0))
+        badParameter("ramp_time", p.rampTime, "must be finite and > 0");
+    if (!(p.initialVoltage > 0 && p.initialVoltage <= 1)) badParameter("initial_voltage", p.initialVoltage, "must lie in (0, 1]");
+    if (!(p.initialFrequency >= 0 && p.initialFrequency < 1))
+        badParameter("initial_frequency", p.initialFrequency, "must lie in [0, 1)");
+    if (!(std::isfinite(p.initialResistanceRatio) && p.initialResistanceRatio >= 1))
+        badParameter("initial_resistance_ratio", p.initialResistanceRatio, "must be finite and >= 1");
+    if (!(p.torqueLimit > 0)) badParameter("torque_limit", p.torqueLimit, "must be > 0");
+}
+
+int Starter::switchCount() const {
+    return static_cast<int>(m_params.switchTimes.size() + m_params.switchSpeeds.size());
+}
+
+SupplyState Starter::supply(double t, int step) const {
+    using K = StarterParams::Kind;
+    SupplyState s;
+    switch (m_params.kind) {
+        case K::DirectOnLine: break;
+        case K::StarDelta: s.connection = step == 0 ? 1.0 / 3.0 : 1.0; break;
+        case K::SoftStart: s.voltage = ramp(m_params.initialVoltage, t, m_params.rampTime); break;
+        case K::FrequencyConverter:
+            s.frequency = ramp(m_params.initialFrequency, t, m_params.rampTime);
+            s.torqueLimit = m_params.torqueLimit;
+            break;
+        case K::RotorResistance:
+            s.resistance = step < static_cast<int>(m_params.resistanceRatios.size())
+                               ? m_params.resistanceRatios[static_cast<std::size_t>(step)]
+                               : 1.0;
+            break;
+        case K::LiquidResistance: s.resistance = ramp(m_params.initialResistanceRatio, t, m_params.rampTime); break;
+    }
+    return s;
+}
+
+std::string Starter::kindName(StarterParams::Kind kind) {
+    using K = StarterParams::Kind;
+    switch (kind) {
+        case K::DirectOnLine: return "direct_on_line";
+        case K::StarDelta: return "star_delta";
+        case K::SoftStart: return "soft_start";
+        case K::FrequencyConverter: return "frequency_converter";
+        case K::RotorResistance: return "rotor_resistance";
+        case K::LiquidResistance: return "liquid_resistance";
+    }
+    return "";
+}
+
+}  // namespace milldyn

@@ -1,0 +1,120 @@
+#pragma once
+// TorqueSpeedCurve: an induction motor's natural torque (and, where the data
+// give it, its current) against shaft speed at rated voltage and frequency,
+// from a catalogue's points or a table, interpolated without overshoot.
+// Plain C++ (no Simbody): the InductionMotor element holds one.
+
+#include <vector>
+
+namespace milldyn {
+
+/**
+ * Monotone piecewise-cubic Hermite interpolation (Fritsch & Carlson, "Monotone
+ * piecewise cubic interpolation", SIAM J. Numer. Anal. 17 (1980) 238-246).
+ *
+ * <pre>
+ *   secants  d_k = (y_{k+1} − y_k)/(x_{k+1} − x_k)
+ *   tangents m_0 = d_0, m_n = d_{n−1}; m_k = (d_{k−1} + d_k)/2, or 0 where
+ *            d_{k−1}·d_k <= 0 (a local extreme sits on a data point);
+ *            on each interval with α = m_k/d_k, β = m_{k+1}/d_k and
+ *            α² + β² > 9 both are scaled by 3/√(α² + β²)
+ *   p(x) on [x_k, x_{k+1}]: the cubic Hermite through (x_k, y_k, m_k), (x_{k+1}, y_{k+1}, m_{k+1})
+ * </pre>
+ *
+ * The interpolant is C¹, reproduces every point exactly and is monotone
+ * wherever the data are, so it never overshoots between points: a
+ * torque–speed curve's maximum is its breakdown point. Below x_0 it holds
+ * y_0; above x_n it continues with the end tangent m_n.
+ * Throws std::invalid_argument unless x has >= 2 finite, strictly increasing
+ * values and y as many finite values.
+ */
+class MonotoneCubic {
+public:
+    MonotoneCubic() = default;
+    MonotoneCubic(std::vector<double> x, std::vector<double> y);
+    double operator()(double x) const;
+    bool empty() const { return m_x.empty(); }
+
+private:
+    std::vector<double> m_x, m_y, m_m;
+};
+
+/// The torque–speed laws an InductionMotor can follow. All SI.
+struct TorqueSpeedCurveParams {
+    enum class Law { Linear, Kloss, Catalogue, Table };
+    Law law = Law::Kloss;
+    /// Rated (nameplate) torque Mn [N*m], > 0.
+    double ratedTorque = 0;
+    /// Rated speed ωn [rad/s], 0 < ωn < ωc.
+    double ratedSpeed = 0;
+    /// Synchronous speed ωc at rated frequency [rad/s], > 0.
+    double synchronousSpeed = 0;
+    /// Breakdown torque ratio λ = Mk/Mn [-], > 1 (Kloss, catalogue).
+    double breakdownRatio = 2.2;
+    /// Linear law only: printed M00 [N*m] and b0 [N*m*s/rad] (both > 0
+    /// replace the nameplate formula).
+    double linearStallTorque = 0;
+    double linearSlope = 0;
+    /// Catalogue: locked-rotor torque ratio Mst/Mn [-] (> 0).
+    double lockedRotorRatio = 0;
+    /// Catalogue: pull-up (minimum) torque ratio Mmin/Mn [-] and its speed
+    /// [rad/s]; a ratio of 0 leaves the point out.
+    double pullUpRatio = 0;
+    double pullUpSpeed = 0;
+    /// Catalogue: breakdown speed [rad/s]; 0: the Kloss breakdown slip
+    /// sk = sn·(λ + √(λ² − 1)) gives ωk = ωc·(1 − sk).
+    double breakdownSpeed = 0;
+    /// Table: speeds [rad/s] strictly increasing from >= 0 to <= ωc, torques
+    /// [N*m] at them; (ωc, 0) is appended when the last speed is below ωc.
+    std::vector<double> tableSpeeds, tableTorques;
+    /// Table: stator (line) currents [A] at the same speeds (optional).
+    std::vector<double> tableCurrents;
+};
+
+/**
+ * Natural torque–speed curve of an induction motor (rated voltage, rated
+ * frequency, rotor short-circuited, delta connection).
+ *
+ * <pre>
+ *   slip s = (ωc − ω)/ωc, sn = (ωc − ωn)/ωc
+ *   Linear (seed 003 eqs 3-4): M = M00 − b0·ω, M00 = Mn·ωc/(ωc − ωn), b0 = Mn/(ωc − ωn)
+ *   Kloss:      M = 2·Mk·s·sk/(s² + sk²), Mk = λ·Mn, sk = sn·(λ + √(λ² − 1))   (M(ωn) = Mn)
+ *   Catalogue:  the monotone cubic (MonotoneCubic) through
+ *               (0, Mst), (ω_pu, M_pu), (ωk, Mk), (ωn, Mn), (ωc, 0)
+ *               — the points of IEC 60034-12 / NEMA MG 1 catalogues
+ *   Table:      the monotone cubic through the given points (and (ωc, 0))
+ * </pre>
+ *
+ * Below ω = 0 the catalogue and table curves hold the locked-rotor value;
+ * above ωc they continue with the slope at ωc (generating). Current
+ * (table law with currents only): the monotone cubic through the currents.
+ * The constructor throws std::invalid_argument naming the parameter.
+ */
+class TorqueSpeedCurve {
+public:
+    explicit TorqueSpeedCurve(const TorqueSpeedCurveParams& params);
+
+    /// Natural torque at shaft speed ω [rad/s] [N*m].
+    double torque(double omega) const;
+    /// Natural line current at shaft speed ω [A]; NaN if the data give none.
+    double current(double omega) const;
+    bool hasCurrent() const { return !m_current.empty(); }
+
+    const TorqueSpeedCurveParams& params() const { return m_params; }
+    double ratedSlip() const { return m_slipRated; }
+    /// Kloss breakdown slip sk [-] (used by the Kloss law).
+    double breakdownSlip() const { return m_slipBreakdown; }
+    double linearStallTorque() const { return m_M00; }
+    double linearSlope() const { return m_b0; }
+    /// The interpolation's points (catalogue and table laws): speeds [rad/s], torques [N*m].
+    const std::vector<double>& pointSpeeds() const { return m_pointSpeeds; }
+    const std::vector<double>& pointTorques() const { return m_pointTorques; }
+
+private:
+    TorqueSpeedCurveParams m_params;
+    double m_M00 = 0, m_b0 = 0, m_slipRated = 0, m_slipBreakdown = 0;
+    std::vector<double> m_pointSpeeds, m_pointTorques;
+    MonotoneCubic m_torque, m_current;
+};
+
+}  // namespace milldyn

@@ -1,0 +1,98 @@
+#include "plugins/transmissions/Clutch.h"
+
+#include "plugins/scene/ElementRegistry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace milldyn {
+
+double calcFrictionTorque(double capacity, double slipSpeed, double regularisationSpeed) {
+    return capacity * std::tanh(slipSpeed / regularisationSpeed);
+}
+
+double rampFraction(double time, double start, double rampTime) {
+    return std::min(std::max((time - start) / rampTime, 0.0), 1.0);
+}
+
+Clutch::Clutch(const SimTK::MobilizedBody& from, const SimTK::MobilizedBody& to, const ClutchParams& p)
+    : m_from(from), m_to(to), m_params(p) {
+    auto bad = [](const std::string& name, double v, const std::string& rule) {
+        throw std::invalid_argument("Clutch: " + name + " = " + std::to_string(v) + " is invalid: " + rule);
+    };
+    if (!(std::isfinite(p.capacity) && p.capacity > 0)) bad("capacity", p.capacity, "must be finite and > 0");
+    if (!(std::isfinite(p.engageTime) && p.engageTime >= 0)) bad("engage_time", p.engageTime, "must be finite and >= 0");
+    if (!(std::isfinite(p.rampTime) && p.rampTime > 0)) bad("ramp_time", p.rampTime, "must be finite and > 0");
+    if (!(std::isfinite(p.regularisationSpeed) && p.regularisationSpeed > 0))
+        bad("regularisation_speed", p.regularisationSpeed, "must be finite and > 0");
+}
+
+double Clutch::calcSlipSpeed(const SimTK::State& s) const { return pinSpeed(s, m_from) - pinSpeed(s, m_to); }
+
+double Clutch::calcCapacity(const SimTK::State& s) const {
+    return m_params.capacity * rampFraction(s.getTime(), m_params.engageTime, m_params.rampTime);
+}
+
+double Clutch::calcTorque(const SimTK::State& s) const {
+    return calcFrictionTorque(calcCapacity(s), calcSlipSpeed(s), m_params.regularisationSpeed);
+}
+
+void Clutch::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                       SimTK::Vector& mobilityForces) const {
+    const double T = calcTorque(s);
+    m_from.applyOneMobilityForce(s, SimTK::MobilizerUIndex(0), -T, mobilityForces);
+    m_to.applyOneMobilityForce(s, SimTK::MobilizerUIndex(0), T, mobilityForces);
+}
+
+namespace {
+
+void buildClutch(const ElementSpec& spec, Scene& scene) {
+    const auto& names = spec.names("bodies");
+    const SceneBody* from = scene.findBody(names.at(0));
+    const SceneBody* to = scene.findBody(names.at(1));
+    ClutchParams p;
+    p.capacity = spec.number("capacity");
+    p.engageTime = spec.number("engage_time");
+    p.rampTime = spec.number("ramp_time");
+    p.regularisationSpeed = spec.number("regularisation_speed");
+    auto* impl = new Clutch(from->mobod, to->mobod, p);
+    SimTK::Force::Custom force(scene.forces(), impl);
+    scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
+    scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::CouplingTorque, SimTK::Stage::Velocity,
+                    [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
+    scene.addProbe({spec.name + ".slip_speed", "rad/s", ProbeRole::Generic, SimTK::Stage::Velocity,
+                    [impl](const SimTK::State& s) { return impl->calcSlipSpeed(s); }});
+    scene.addSteadyResidual({spec.name + ".slip_speed",
+                             [impl](const SimTK::State& s) { return impl->calcSlipSpeed(s); }});
+    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
+                         [impl](const SimTK::State& s) { return impl->calcTorque(s) * impl->calcSlipSpeed(s); },
+                         "slip heat of the clutch " + spec.name});
+    scene.addSpeedRelation(from->name, to->name, 1.0);
+    scene.note("force " + spec.name + " (Clutch)", "couples " + from->name + " to " + to->name + " by friction");
+}
+
+}  // namespace
+
+void registerClutch(ElementRegistry& registry) {
+    using P = ParamSchema;
+    ElementSchema s;
+    s.type = "Clutch";
+    s.doc = "Friction clutch between two shafts (1:1) engaging over a ramp: T = M_c(t)·tanh(Δω/ω_reg); slip heat.";
+    s.params = {
+        P::bodyPair("bodies", "[from, to]: the driving shaft first"),
+        P::quantity("capacity", "N*m", "torque capacity when engaged").above(0),
+        P::quantity("engage_time", "s", "engagement starts").optional(0.0).atLeast(0),
+        P::quantity("ramp_time", "s", "capacity ramp from 0 to full").above(0),
+        P::quantity("regularisation_speed", "rad/s", "slip-speed regularisation ω_reg").optional(1e-3).above(0),
+    };
+    s.crossCheck = [](const ElementSpec& e) {
+        const auto& n = e.names("bodies");
+        if (n.size() == 2 && n[0] == n[1])
+            throw e.error("bodies", "a clutch needs two different bodies, got '" + n[0] + "' twice");
+    };
+    registry.add({std::move(s), buildClutch});
+}
+
+}  // namespace milldyn

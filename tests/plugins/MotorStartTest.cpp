@@ -1,0 +1,270 @@
+// Tests of the motor laws and starters (plugins/motors/TorqueSpeedCurve.h,
+// Starter.h, InductionMotor.h). Expected values are worked out by hand in
+// the comments or from the closed forms written out afresh here.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "driver/analyses/Analysis.h"
+#include "driver/ModelFile.h"
+#include "plugins/motors/InductionMotor.h"
+#include "plugins/motors/Starter.h"
+#include "plugins/motors/TorqueSpeedCurve.h"
+#include "tests/plugins/ShaftFixture.h"
+
+namespace milldyn {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRpm = 2 * kPi / 60;
+constexpr double kRounding = 1e-12;
+
+TorqueSpeedCurveParams catalogue() {
+    TorqueSpeedCurveParams p;
+    p.law = TorqueSpeedCurveParams::Law::Catalogue;
+    p.ratedTorque = 100;
+    p.ratedSpeed = 1470 * kRpm;
+    p.synchronousSpeed = 1500 * kRpm;
+    p.breakdownRatio = 2.8;
+    p.breakdownSpeed = 1320 * kRpm;
+    p.lockedRotorRatio = 2.2;
+    p.pullUpRatio = 1.9;
+    p.pullUpSpeed = 450 * kRpm;
+    return p;
+}
+
+TEST(MonotoneCubic, PassesThroughItsPointsAndNeverOvershoots) {
+    // A torque-speed shape: rises to a peak at x = 3, falls to 0 at x = 4.
+    const std::vector<double> x = {0, 1, 2, 3, 4}, y = {2.2, 1.9, 2.3, 2.8, 0};
+    const MonotoneCubic f(x, y);
+    for (std::size_t k = 0; k < x.size(); ++k) EXPECT_EQ(f(x[k]), y[k]);
+    for (int i = 0; i <= 4000; ++i) {
+        const double xi = 4.0 * i / 4000;
+        EXPECT_LE(f(xi), 2.8) << xi;  // the peak is the data's
+        EXPECT_GE(f(xi), 0.0) << xi;
+        // monotone where the data are: between 1 and 3 rising, 3 to 4 falling
+        if (xi > 1 && xi < 3) {
+            EXPECT_GE(f(xi + 1e-6), f(xi)) << xi;
+        }
+        if (xi > 3 && xi < 4 - 1e-6) {
+            EXPECT_LE(f(xi + 1e-6), f(xi)) << xi;
+        }
+        // between 0 and 1 falling, never below the pull-up point 1.9
+        if (xi < 1) {
+            EXPECT_GE(f(xi), 1.9) << xi;
+        }
+    }
+    EXPECT_EQ(f(-1), 2.2);  // holds below the first point
+}
+
+TEST(MonotoneCubic, RejectsSpeedsThatDoNotIncrease) {
+    EXPECT_THROW(MonotoneCubic({0, 2, 1}, {1, 2, 3}), std::invalid_argument);
+    EXPECT_THROW(MonotoneCubic({0}, {1}), std::invalid_argument);
+}
+
+TEST(TorqueSpeedCurve, CatalogueReproducesItsPoints) {
+    const TorqueSpeedCurve c(catalogue());
+    EXPECT_NEAR(c.torque(0), 220, kRounding * 220);
+    EXPECT_NEAR(c.torque(450 * kRpm), 190, kRounding * 190);
+    EXPECT_NEAR(c.torque(1320 * kRpm), 280, kRounding * 280);
+    EXPECT_NEAR(c.torque(1470 * kRpm), 100, kRounding * 100);
+    EXPECT_NEAR(c.torque(1500 * kRpm), 0, kRounding * 100);
+    EXPECT_LT(c.torque(1510 * kRpm), 0);  // generating above synchronous
+}
+
+TEST(TorqueSpeedCurve, CatalogueRejectsABreakdownAboveRatedSpeed) {
+    TorqueSpeedCurveParams p = catalogue();
+    p.breakdownSpeed = 1480 * kRpm;
+    EXPECT_THROW(TorqueSpeedCurve{p}, std::invalid_argument);
+    p = catalogue();
+    p.breakdownRatio = 0.9;  // breakdown below rated
+    EXPECT_THROW(TorqueSpeedCurve{p}, std::invalid_argument);
+}
+
+TEST(TorqueSpeedCurve, TableInterpolatesTorqueAndCurrent) {
+    TorqueSpeedCurveParams p;
+    p.law = TorqueSpeedCurveParams::Law::Table;
+    p.ratedTorque = 100;
+    p.ratedSpeed = 1470 * kRpm;
+    p.synchronousSpeed = 1500 * kRpm;
+    p.tableSpeeds = {0, 100, 150};
+    p.tableTorques = {200, 250, 100};
+    p.tableCurrents = {600, 500, 120};
+    const TorqueSpeedCurve c(p);
+    EXPECT_EQ(c.torque(100), 250);
+    EXPECT_EQ(c.current(150), 120);
+    EXPECT_NEAR(c.torque(1500 * kRpm), 0, 1e-12);  // (ωc, 0) appended
+    p.tableSpeeds = {0, 150, 100};
+    EXPECT_THROW(TorqueSpeedCurve{p}, std::invalid_argument);
+}
+
+TEST(Starter, SupplyStatesByHand) {
+    StarterParams p;
+    p.kind = StarterParams::Kind::SoftStart;
+    p.initialVoltage = 0.4;
+    p.rampTime = 2;
+    // V(1 s) = 0.4 + 0.6·0.5 = 0.7; after the ramp 1.
+    EXPECT_NEAR(Starter(p).supply(1.0, 0).voltage, 0.7, kRounding);
+    EXPECT_EQ(Starter(p).supply(3.0, 0).voltage, 1.0);
+    p.kind = StarterParams::Kind::StarDelta;
+    p.switchTimes = {2};
+    EXPECT_NEAR(Starter(p).supply(1.0, 0).connection, 1.0 / 3, kRounding);
+    EXPECT_EQ(Starter(p).supply(1.0, 1).connection, 1.0);
+    p.kind = StarterParams::Kind::RotorResistance;
+    p.switchTimes = {1, 2};
+    p.resistanceRatios = {8, 3};
+    EXPECT_EQ(Starter(p).supply(0.5, 0).resistance, 8.0);
+    EXPECT_EQ(Starter(p).supply(1.5, 1).resistance, 3.0);
+    EXPECT_EQ(Starter(p).supply(2.5, 2).resistance, 1.0);
+    p.resistanceRatios = {3, 8};  // not decreasing
+    EXPECT_THROW(Starter{p}, std::invalid_argument);
+    p = StarterParams();
+    p.kind = StarterParams::Kind::FrequencyConverter;
+    p.rampTime = 0;  // a ramp of zero length
+    EXPECT_THROW(Starter{p}, std::invalid_argument);
+    p.rampTime = 4;
+    p.initialFrequency = 0.2;
+    EXPECT_NEAR(Starter(p).supply(2.0, 0).frequency, 0.6, kRounding);
+    p.switchTimes = {-1};
+    p.kind = StarterParams::Kind::StarDelta;
+    EXPECT_THROW(Starter{p}, std::invalid_argument);  // switching before t = 0
+}
+
+struct Bench {
+    test::ShaftSystem sys;
+    SimTK::MobilizedBody::Pin shaft;
+    InductionMotor* motor;
+    explicit Bench(const InductionMotorParams& p) : shaft(sys.addShaft(1.0)) {
+        motor = new InductionMotor(sys.forces(), shaft, p);
+        SimTK::Force::Custom force(sys.forces(), motor);
+    }
+};
+
+InductionMotorParams kloss() {
+    InductionMotorParams p;
+    p.law = TorqueSpeedCurveParams::Law::Kloss;
+    p.ratedTorque = 97.4;
+    p.ratedSpeed = 1470 * kRpm;
+    p.synchronousSpeed = 1500 * kRpm;
+    p.breakdownRatio = 2.5;
+    return p;
+}
+
+// Kloss written out afresh: sn = 0.02, sk = sn·(λ + √(λ² − 1)).
+double klossByHand(double s, double skScale = 1) {
+    const double sk = 0.02 * (2.5 + std::sqrt(2.5 * 2.5 - 1)) * skScale, Mk = 2.5 * 97.4;
+    return 2 * Mk * s * sk / (s * s + sk * sk);
+}
+
+TEST(InductionMotorSupply, ConverterShiftsTheCurveBySlipSpeed) {
+    Bench b(kloss());
+    const double wc = 1500 * kRpm;
+    SupplyState u;
+    u.frequency = 0.5;
+    // At ω = 0.4·ωc under f = 0.5 the slip speed is 0.1·ωc: natural slip 0.1.
+    EXPECT_NEAR(b.motor->torqueAtSpeed(0.4 * wc, u), klossByHand(0.1), kRounding * 200);
+    u.torqueLimit = 50;
+    EXPECT_EQ(b.motor->torqueAtSpeed(0.4 * wc, u), 50.0);
+}
+
+TEST(InductionMotorSupply, RotorResistanceScalesTheBreakdownSlip) {
+    Bench b(kloss());
+    const double wc = 1500 * kRpm;
+    SupplyState u;
+    u.resistance = 5;
+    for (double s : {1.0, 0.6, 0.3, 0.05})
+        EXPECT_NEAR(b.motor->torqueAtSpeed(wc * (1 - s), u), klossByHand(s, 5), kRounding * 200) << s;
+    u = SupplyState();
+    u.voltage = 0.5;
+    u.connection = 1.0 / 3;
+    EXPECT_NEAR(b.motor->torqueAtSpeed(0.5 * wc, u), klossByHand(0.5) * 0.25 / 3, kRounding * 200);
+}
+
+TEST(InductionMotorSupply, StarterStepIsADiscreteStateStartingAtZero) {
+    InductionMotorParams p = kloss();
+    p.starter.kind = StarterParams::Kind::StarDelta;
+    p.starter.switchTimes = {1};
+    Bench b(p);
+    SimTK::State s = b.sys.defaultState();
+    EXPECT_EQ(b.motor->getStarterStep(s), 0);
+    test::setShaft(s, b.shaft, 0, 0);
+    b.sys.system().realize(s, SimTK::Stage::Dynamics);
+    EXPECT_NEAR(b.motor->calcTorque(s), klossByHand(1) / 3, kRounding * 200);
+    b.motor->setStarterStep(s, 1);
+    b.sys.system().realize(s, SimTK::Stage::Dynamics);
+    EXPECT_NEAR(b.motor->calcTorque(s), klossByHand(1), kRounding * 200);
+}
+
+// Bad input: one line file:line:col: error: key: reason.
+std::string errorOf(const std::string& motorKeys) {
+    const std::string text = "format_version: 1\nname: t\nbodies:\n  - name: shaft\n    inertia: 1 kg*m^2\n"
+                             "    joint: {type: pin, parent: ground}\nelements:\n  - type: InductionMotor\n"
+                             "    name: motor\n    body: shaft\n    rated_torque: 97.4 N*m\n    rated_speed: 1470 rpm\n"
+                             "    synchronous_speed: 1500 rpm\n" +
+                             motorKeys + "scenario:\n  analysis: transient\n  end_time: 1 s\n";
+    try {
+        readModelText(text, "m.yaml", defaultModelReader());
+    } catch (const SpecError& e) {
+        return e.formatted();
+    }
+    return "";
+}
+
+TEST(InductionMotorInput, BadStartInputsGiveOneLocatedLine) {
+    EXPECT_EQ(errorOf("    law: table\n    curve_speeds: [0 rpm, 900 rpm, 600 rpm]\n    curve_torques: [1 N*m, 2 N*m, 3 N*m]\n")
+                  .rfind("m.yaml:15:", 0),
+              0u);
+    EXPECT_NE(errorOf("    law: table\n    curve_speeds: [0 rpm, 900 rpm, 600 rpm]\n    curve_torques: [1 N*m, 2 N*m, 3 N*m]\n")
+                  .find("error: motor.curve_speeds: torque-speed points must increase strictly"),
+              std::string::npos);
+    EXPECT_NE(errorOf("    breakdown_ratio: 0.8\n").find("m.yaml:14:22: error: motor.breakdown_ratio: must be > 1"),
+              std::string::npos)
+        << errorOf("    breakdown_ratio: 0.8\n");
+    EXPECT_NE(errorOf("    starter: star_delta\n    switch_times: [-1 s]\n").find("error: motor.switch_times: must be > 0"),
+              std::string::npos)
+        << errorOf("    starter: star_delta\n    switch_times: [-1 s]\n");
+    EXPECT_NE(errorOf("    starter: soft_start\n    ramp_time: 0 s\n").find("error: motor.ramp_time: a ramp of zero length"),
+              std::string::npos)
+        << errorOf("    starter: soft_start\n    ramp_time: 0 s\n");
+    EXPECT_NE(errorOf("    starter: soft_start\n    switch_times: [1 s]\n    ramp_time: 1 s\n")
+                  .find("error: motor.switch_times: not used with starter soft_start"),
+              std::string::npos);
+    EXPECT_NE(errorOf("    law: catalogue\n    locked_rotor_ratio: 2\n    breakdown_speed: 1490 rpm\n")
+                  .find("error: motor.breakdown_speed: the breakdown speed"),
+              std::string::npos);
+}
+
+// A star-delta switch at a speed: the step is taken at the end of the first
+// accepted step past 60 rad/s, so every sample below it is in star (1/3 of
+// the Kloss torque) and every sample clearly above it in delta.
+TEST(InductionMotorStarter, StarDeltaSwitchesAtASpeed) {
+    const std::string text = "format_version: 1\nname: t\nbodies:\n  - name: shaft\n    inertia: 1.5 kg*m^2\n"
+                             "    joint: {type: pin, parent: ground}\nelements:\n  - type: InductionMotor\n"
+                             "    name: motor\n    body: shaft\n    rated_torque: 97.4 N*m\n    rated_speed: 1470 rpm\n"
+                             "    synchronous_speed: 1500 rpm\n    breakdown_ratio: 2.5\n    starter: star_delta\n"
+                             "    switch_speeds: [60 rad/s]\nscenario:\n  analysis: transient\n  end_time: 10 s\n"
+                             "integrator:\n  name: RungeKuttaMerson\n  accuracy: 1e-9\noutputs:\n  sample_interval: 5 ms\n";
+    const AnalysisResult r = runAnalysis(readModelText(text, "t.yaml", defaultModelReader()));
+    const double wc = 1500 * kRpm;
+    int star = 0, delta = 0;
+    for (std::size_t i = 0; i < r.rows.size(); ++i) {
+        const double w = r.value(i, "shaft.speed");
+        const double ratio = r.value(i, "motor.torque") / klossByHand((wc - w) / wc);
+        if (w < 60) {
+            EXPECT_NEAR(ratio, 1.0 / 3, 1e-12) << w;
+            ++star;
+        } else if (w > 61) {
+            EXPECT_NEAR(ratio, 1.0, 1e-12) << w;
+            ++delta;
+        }
+    }
+    EXPECT_GT(star, 10);
+    EXPECT_GT(delta, 10);
+    EXPECT_EQ(r.verdict, "completed") << r.verdictText;
+}
+
+}  // namespace
+}  // namespace milldyn

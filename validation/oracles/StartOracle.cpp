@@ -1,0 +1,42 @@
+#include "validation/oracles/StartOracle.h"
+
+#include <cmath>
+
+namespace milldyn::oracles {
+
+double constantTorqueStartTime(double J, double omega, double M, double Mc) { return J * omega / (M - Mc); }
+
+double klossBreakdownSlip(double sn, double lambda) { return sn * (lambda + std::sqrt(lambda * lambda - 1)); }
+
+double klossTorque(double s, double Mk, double sk) { return 2 * Mk / (s / sk + sk / s); }
+
+double klossSteadySlip(double Mc, double Mk, double sk) {
+    const double q = Mk / Mc;
+    return sk * (q - std::sqrt(q * q - 1));
+}
+
+double klossInertiaStartTime(double J, double wc, double Mk, double sk, double se) {
+    // J·ωc·ds/dt = −M(s) ⇒ dt = J·ωc/(2·Mk)·(s/sk + sk/s)·(−ds), integrated from 1 to se.
+    return J * wc / (2 * Mk) * ((1 - se * se) / (2 * sk) + sk * std::log(1 / se));
+}
+
+double starDeltaTorqueRatio() {
+    const double phaseVoltage = 1 / std::sqrt(3.0);
+    return phaseVoltage * phaseVoltage;
+}
+
+double reducedVoltageTorqueRatio(double v) { return v * v; }
+
+double rotorHeatInertiaStart(double J, double wc, double we) { return J * (wc * we - 0.5 * we * we); }
+
+double clutchSlipEnergy(double J1, double J2, double w0, double Mf, double Mc) {
+    const double a = Mf / J1 + (Mf - Mc) / J2;
+    return 0.5 * Mf * w0 * w0 / a;
+}
+
+double brakedSpeed(double J, double w0, double Mb, double Mc, double Tr, double t) {
+    const double rampImpulse = t < Tr ? Mb * t * t / (2 * Tr) : Mb * (t - Tr / 2);
+    return w0 - (Mc * t + rampImpulse) / J;
+}
+
+}  // namespace milldyn::oracles

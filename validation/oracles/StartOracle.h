@@ -1,0 +1,56 @@
+#pragma once
+// StartOracle: textbook closed forms for starting a drive, written from the
+// equations alone (standard library only; no Simbody, no milldyn element),
+// so the multibody model's start can be checked against them.
+//
+// Sources: the equation of motion J·dω/dt = M − Mc; the Kloss formula
+// M = 2·Mk/(s/sk + sk/s) (Kloss 1927; e.g. Fischer, "Elektrische
+// Maschinen", §7; Chilikin, "Electric drive", ch. 3); the rotor circuit's
+// heat P = M·ωc·s (air-gap power times slip); the induction machine's
+// torque ∝ V² at constant frequency; star connection: phase voltage
+// V/√3.
+
+namespace milldyn::oracles {
+
+/// Time to accelerate J [kg*m^2] from rest to ω [rad/s] under constant
+/// motor torque M and constant load Mc [N*m]: t = J·ω/(M − Mc) [s].
+double constantTorqueStartTime(double J, double omega, double M, double Mc);
+
+/// The Kloss breakdown slip from the nameplate: sk = sn·(λ + √(λ² − 1)).
+double klossBreakdownSlip(double ratedSlip, double breakdownRatio);
+/// The Kloss torque 2·Mk·s·sk/(s² + sk²) [N*m].
+double klossTorque(double slip, double breakdownTorque, double breakdownSlip);
+/// The steady slip under a constant load Mc < Mk on the stable branch
+/// (s < sk): s = sk·(Mk/Mc − √((Mk/Mc)² − 1)).
+double klossSteadySlip(double loadTorque, double breakdownTorque, double breakdownSlip);
+/// Time for a DOL Kloss start of a pure inertia J from rest (s = 1) to
+/// slip s_e: t = J·ωc/(2·Mk)·[(1 − s_e²)/(2·sk) + sk·ln(1/s_e)] [s].
+double klossInertiaStartTime(double J, double synchronousSpeed, double breakdownTorque, double breakdownSlip,
+                             double endSlip);
+
+/// Torque ratio of a star start to the delta connection: (1/√3)² = 1/3.
+double starDeltaTorqueRatio();
+/// Torque ratio of a reduced voltage v = V/V_rated at constant frequency: v².
+double reducedVoltageTorqueRatio(double voltageRatio);
+
+/// Heat in the rotor circuit of a DOL start of a pure inertia J from rest
+/// to ω_e (no load, whatever the torque curve): ∫M·(ωc − ω)dt =
+/// J·(ωc·ω_e − ω_e²/2); ½·J·ωc² when ω_e = ωc [J].
+double rotorHeatInertiaStart(double J, double synchronousSpeed, double endSpeed);
+
+/// Slip energy of a friction clutch of constant torque Mf [N*m] between a
+/// driving inertia J1 (no drive torque) turning at ω0 and a driven J2 at
+/// rest with a constant load Mc [N*m]: the slip speed falls at
+/// a = Mf/J1 + (Mf − Mc)/J2, slips for t_s = ω0/a and heats
+/// E = Mf·ω0·t_s/2 = ½·Mf·ω0²/a [J] (J1 → ∞: ½·J2·ω0²·Mf/(Mf − Mc)).
+/// With Mc = 0 the heat is ½·ω0²·J1·J2/(J1 + J2) for any engagement ramp
+/// Mf(t): E = ∫Mf·v dt and a(t)·dt = −dv give E = ∫v·(−dv)/(1/J1 + 1/J2).
+double clutchSlipEnergy(double J1, double J2, double drivingSpeed, double frictionTorque, double loadTorque);
+
+/// Speed of an inertia J [kg*m^2] from ω0 [rad/s] under a brake whose
+/// torque rises linearly from 0 to Mb over Tr [s] from t = 0, and a
+/// constant load Mc [N*m], until it stops:
+/// ω(t) = ω0 − (Mc·t + Mb·(t²/(2Tr) for t < Tr, t − Tr/2 after))/J [rad/s].
+double brakedSpeed(double J, double omega0, double brakeTorque, double loadTorque, double rampTime, double t);
+
+}  // namespace milldyn::oracles
