@@ -51,7 +51,7 @@ struct EnergyFlow {
     std::function<double(const SimTK::State&)> power;
     /// What the energy is, in words, for the summary ("heat in the rotor
     /// circuit", "journal friction heat"); empty: said from the kind.
-    std::string what;
+    std::string what = {};
 };
 
 /// A body the scene holds: a shaft on a pin, rotating about its z axis.
