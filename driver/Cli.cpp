@@ -10,6 +10,7 @@
 #include "driver/outputs/Schematic.h"
 #include "driver/outputs/Writers.h"
 #include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/EngineTag.h"
 #include "validation/cases/ValidationCases.h"
 #include "validation/report/ReportWriter.h"
 
@@ -369,7 +370,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
             return 0;
         }
         if (!args.empty() && args[0] == "--version") {
-            out << "milldyn " << kVersion << "\n";
+            out << "milldyn " << kVersion << "\n" << kSimbodyEngine << "\n";
             return 0;
         }
         const Arguments a = parseArguments(args);
