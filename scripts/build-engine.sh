@@ -35,7 +35,19 @@ cmake_flags=(
   -DCMAKE_INSTALL_LIBDIR=lib
   -DSIMBODY_VISUALIZER_INSTALL_DIR=libexec/simbody   # required by Debian patch 0001
 )
-flags_id="$(printf '%s\n' "${cmake_flags[@]}" "$(g++ -dumpfullversion 2>/dev/null || echo nogxx)")"
+# Optional build-time patches (scripts/engine-patches/NAME.patch, applied
+# with patch -p1), chosen by name: MILLDYN_ENGINE_PATCHES="NAME ...". None by
+# default; their contents are part of the flags, so a patched engine has a
+# prefix of its own (docs/building.md, "Engine patches").
+patch_dir="$(cd "$(dirname "$0")" && pwd)/engine-patches"
+patches=()
+for name in ${MILLDYN_ENGINE_PATCHES:-}; do
+  [ -f "$patch_dir/$name.patch" ] || { echo "build-engine: no patch $patch_dir/$name.patch" >&2; exit 1; }
+  patches+=("$patch_dir/$name.patch")
+done
+patch_id=""
+for p in "${patches[@]}"; do patch_id+="patch $(basename "$p") $(sha256sum < "$p" | cut -c1-16)"$'\n'; done
+flags_id="$(printf '%s\n' "${cmake_flags[@]}" "$(g++ -dumpfullversion 2>/dev/null || echo nogxx)")${patch_id:+$'\n'}${patch_id%$'\n'}"
 hash="$(printf '%s' "$flags_id" | sha256sum | cut -c1-10)"
 safe_version="${version//[:+~]/_}"
 prefix="$root/$pkg-$safe_version-$hash"
@@ -61,7 +73,7 @@ if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$stamp_text" ]; then
 fi
 
 # Build dependencies of the libraries (no visualizer: no OpenGL/GLUT).
-deps=(cmake g++ ninja-build dpkg-dev liblapack-dev libblas-dev)
+deps=(cmake g++ ninja-build dpkg-dev patch liblapack-dev libblas-dev)
 missing=()
 for p in "${deps[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -117,8 +129,10 @@ apt-get "${apt_opts[@]}" update -qq >&2 || echo "build-engine: some deb-src entr
 src="$(find "$work" -mindepth 1 -maxdepth 1 -type d -name "$pkg-*" | head -n1)"
 [ -n "$src" ] && [ -f "$src/CMakeLists.txt" ] || { echo "build-engine: no unpacked simbody source in $work" >&2; exit 1; }
 
-# Optional, documented build-time patches (none applied today; see
-# docs/building.md "Engine patches").
+for p in "${patches[@]}"; do
+  echo "build-engine: applying $(basename "$p")" >&2
+  patch -d "$src" -p1 --forward --batch < "$p" >&2
+done
 
 jobs="${MILLDYN_ENGINE_JOBS:-$(nproc)}"
 echo "build-engine: building simbody $version (Release, libraries only, -j$jobs) into $prefix" >&2

@@ -31,7 +31,7 @@ CASES = [
     ("models/burr_mill_5p5kW_identify.yaml", []),
     ("models/roll_crusher.yaml", ["--end-time", "1 s"]),
     ("models/planetary_gear_100x200.yaml", ["--scenario", "turn"]),
-    ("models/planetary_gear_100x200.yaml", ["--scenario", "start", "--end-time", "1 s"]),
+    ("models/planetary_gear_100x200.yaml", ["--scenario", "start", "--set", "scenarios.start.end_time=1 s"]),
     ("models/planetary_belt_200x1000.yaml", []),
     ("models/bead_mill_5disc_0p1m.yaml", []),
     ("models/bead_mill_5disc_0p1m.yaml", ["--scenario", "modes"]),
