@@ -12,8 +12,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${MILLDYN_BUILD_DIR:-build}"
-werror=OFF
-[ "${CI:-}" = "true" ] && werror=ON
+# -Werror when CI=true; otherwise the build directory keeps its setting
+# (switching it recompiles everything).
+werror_args=()
+[ "${CI:-}" = "true" ] && werror_args=(-DMILLDYN_WERROR=ON)
 
 engine="${MILLDYN_ENGINE:-}"
 for arg in "$@"; do
@@ -32,7 +34,7 @@ if [ "$engine" = "release" ]; then
   prefix="$(scripts/build-engine.sh | tail -n 1)"
   engine_args+=(-DMILLDYN_ENGINE_PREFIX="$prefix")
 fi
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DMILLDYN_WERROR="$werror" "${engine_args[@]}" "$@" >/dev/null
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "${werror_args[@]}" "${engine_args[@]}" "$@" >/dev/null
 targets=()
 for t in ${MILLDYN_BUILD_TARGETS:-}; do targets+=(--target "$t"); done
 cmake --build "$build_dir" -j"$(nproc)" "${targets[@]}"
