@@ -9,7 +9,7 @@ rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip() and not l.startswi
 # ("Release": Simbody built with NDEBUG; "checked": Debian's libsimbody):
 # both engines side by side, each compared with bare Simbody on its own engine.
 for r in rows:
-    if "engine" in r:
+    if "engine" in r and "method" in r:
         r["method"] = "%s [%s]" % (r["method"], r["engine"])
 if "configurations_per_s" in rows[0]:
     # bench_kinetostatic: throughput, realizations per configuration, floor.
