@@ -19,6 +19,9 @@ pkg=simbody
 # Version: the source version of the libsimbody-dev apt would install, so the
 # engine and the Debian fallback are the same Simbody.
 version="$(apt-cache policy libsimbody-dev 2>/dev/null | awk '/Candidate:/ {print $2}')"
+if [ -z "$version" ] || [ "$version" = "(none)" ]; then  # no package lists: the installed one
+  version="$(dpkg-query -W -f='${Version}' libsimbody-dev 2>/dev/null || true)"
+fi
 if [ -z "$version" ] || [ "$version" = "(none)" ]; then
   echo "build-engine: apt knows no libsimbody-dev version (run apt-get update)" >&2
   exit 1
