@@ -5,15 +5,21 @@ Odeint dopri5, the best SciPy method and bare Simbody with the same
 integrator (milldyn_X / simbody_X: milldyn's own overhead)."""
 import json, sys
 rows = [json.loads(l) for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
+# bench/run.sh tags the lines of Simbody programs with their engine
+# ("Release": Simbody built with NDEBUG; "checked": Debian's libsimbody):
+# both engines side by side, each compared with bare Simbody on its own engine.
+for r in rows:
+    if "engine" in r and "method" in r:
+        r["method"] = "%s [%s]" % (r["method"], r["engine"])
 if "configurations_per_s" in rows[0]:
     # bench_kinetostatic: throughput, realizations per configuration, floor.
-    print("| model | level | configurations/s | Acceleration realizations / configuration | µs / realization "
+    print("| model | level | engine | configurations/s | Acceleration realizations / configuration | µs / realization "
           "| floor: configurations/s (1 realization each) | / floor |")
-    print("|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|")
     for r in rows:
         n = r["acceleration_realizations_per_configuration"]
-        print("| %s | %s | %.4g | %.3g | %.3g | %.4g | %.3g |" % (
-            r["model"], r["level"], r["configurations_per_s"], n, 1e6 / (r["configurations_per_s"] * n),
+        print("| %s | %s | %s | %.4g | %.3g | %.3g | %.4g | %.3g |" % (
+            r["model"], r["level"], r.get("engine", "–"), r["configurations_per_s"], n, 1e6 / (r["configurations_per_s"] * n),
             r["floor_configurations_per_s"], r["floor_configurations_per_s"] / r["configurations_per_s"]))
     sys.exit(0)
 what = sys.argv[2] if len(sys.argv) > 2 else "omega2 (0.5, 0.85, 4 s)"
@@ -24,13 +30,17 @@ for r in rows:
 odeint = next(r for r in rows if r["method"] == "odeint_dopri5")["wall_s"]
 scipy_best = min(r["wall_s"] for r in rows if r["method"].startswith("scipy_"))
 bare = {r["method"][len("simbody_"):]: r["wall_s"] for r in rows if r["method"].startswith("simbody_")}
+# The same method on the checked engine over the Release engine.
+by_method = {r["method"]: r["wall_s"] for r in rows}
 print("| method | tolerance | max rel. error of %s | wall [ms] | realizations (rhs calls) | µs each "
-      "| / odeint dopri5 | / best SciPy | / bare Simbody |" % what)
-print("|---|---|---|---|---|---|---|---|---|")
+      "| / odeint dopri5 | / best SciPy | / bare Simbody | checked / Release |" % what)
+print("|---|---|---|---|---|---|---|---|---|---|")
 for r in rows:
     integrator = r["method"][len("milldyn_"):] if r["method"].startswith("milldyn_") else None
-    print("| %s | %g | %.2g | %.3g | %s | %s | %.3g | %.3g | %s |" % (
+    other = r["method"].replace("[Release]", "[checked]")
+    speedup = "%.3g" % (by_method[other] / r["wall_s"]) if other != r["method"] and other in by_method else "–"
+    print("| %s | %g | %.2g | %.3g | %s | %s | %.3g | %.3g | %s | %s |" % (
         r["method"], r["tolerance"], r["error"], 1e3 * r["wall_s"],
         r.get("realizations", "–"), "%.3g" % (1e6 * r["wall_s"] / r["realizations"]) if r.get("realizations") else "–",
         r["wall_s"] / odeint, r["wall_s"] / scipy_best,
-        "%.3g" % (r["wall_s"] / bare[integrator]) if integrator in bare else "–"))
+        "%.3g" % (r["wall_s"] / bare[integrator]) if integrator in bare else "–", speedup))

@@ -18,28 +18,46 @@ done
 if [ ${#missing[@]} -gt 0 ]; then
   apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}"
 fi
-cmake -S . -B build -DMILLDYN_BENCH=ON >/dev/null
-cmake --build build -j"$(nproc)" --target bench_odeint bench_milldyn bench_bare_simbody \
-  bench_kinetostatic
-echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
+# Both engines side by side (docs/building.md): the Release engine in build/,
+# Debian's checked library in build-debian/ (MILLDYN_BENCH_ENGINES=release
+# for one). Odeint (built with NDEBUG in either) and SciPy run once.
+engines="${MILLDYN_BENCH_ENGINES:-release debian}"
+dir_of() { [ "$1" = release ] && echo build || echo build-debian; }
+for e in $engines; do
+  MILLDYN_BUILD_DIR="$(dir_of "$e")" MILLDYN_ENGINE="$e" \
+    MILLDYN_BUILD_TARGETS="bench_odeint bench_milldyn bench_bare_simbody bench_kinetostatic" \
+    scripts/build.sh -DMILLDYN_BENCH=ON
+done
+first="$(dir_of "${engines%% *}")"
+# Each line of an engine's programs gets its engine's name ("Release", "checked").
+engine_runs() {  # engine_runs PROGRAM ARGS...: every engine, lines tagged
+  local p=$1; shift
+  for e in $engines; do
+    local d tag
+    d="$(dir_of "$e")"
+    tag="$([ "$e" = release ] && echo Release || echo checked)"   # as milldyn --version says
+    "$d/$p" "$@" | sed "s/^{/{\"engine\": \"$tag\", /"
+  done
+}
+echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, engines: $engines"
 out=$(mktemp)
-build/bench_odeint burr 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
-build/bench_odeint burr "$tol" "$repeats" >> "$out"
+"$first"/bench_odeint burr 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
+"$first"/bench_odeint burr "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/scipy_burr.py "$tol" 3 >> "$out"
-build/bench_bare_simbody burr "$tol" "$repeats" >> "$out"
-build/bench_milldyn burr "$tol" "$repeats" >> "$out"
+engine_runs bench_bare_simbody burr "$tol" "$repeats" >> "$out"
+engine_runs bench_milldyn burr "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/report.py "$out"
 # The roll crusher 2-mass level, rows in phase (bench/roll_equations.h).
 out=$(mktemp)
-build/bench_odeint roll 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
-build/bench_odeint roll "$tol" "$repeats" >> "$out"
+"$first"/bench_odeint roll 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
+"$first"/bench_odeint roll "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/scipy_roll.py "$tol" 3 >> "$out"
-build/bench_bare_simbody roll "$tol" "$repeats" >> "$out"
-build/bench_milldyn roll "$tol" "$repeats" >> "$out"
+engine_runs bench_bare_simbody roll "$tol" "$repeats" >> "$out"
+engine_runs bench_milldyn roll "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/report.py "$out" "motor speed (2.5, 5, 10 s)"
 # Kinetostatic throughput (bench/kinetostatic.cpp): configurations/s per
 # core of the planetary-gear `turn` scenario and of its floor.
 out=$(mktemp)
-build/bench_kinetostatic 2000 3 > "$out"
+engine_runs bench_kinetostatic 2000 3 > "$out"
 /usr/bin/python3 bench/report.py "$out"
 echo "# done $(date -u '+%H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -1,8 +1,9 @@
-# Debian's libSimTK* are built without NDEBUG, and some Simbody classes
-# (e.g. CacheEntryInfo in SimTKcommon/internal/StateImpl.h) change layout
-# under NDEBUG. Any translation unit that includes Simbody headers with
-# -DNDEBUG disagrees with the library and crashes in realizeTopology().
-# We keep optimisation and strip NDEBUG from every configuration's flags.
+# NDEBUG changes the layout of some Simbody classes (e.g. CacheEntryInfo in
+# SimTKcommon/internal/StateImpl.h): a translation unit and the Simbody
+# library must agree on it, or realizeTopology() crashes. So NDEBUG must never
+# come from CMake's build-type flags (Release and RelWithDebInfo add it):
+# this strips it from every configuration's flags, keeping the optimisation,
+# and cmake/Engine.cmake defines it exactly when the engine was built with it.
 foreach(flag_var
     CMAKE_CXX_FLAGS CMAKE_CXX_FLAGS_RELEASE CMAKE_CXX_FLAGS_RELWITHDEBINFO
     CMAKE_CXX_FLAGS_MINSIZEREL CMAKE_CXX_FLAGS_DEBUG)
@@ -18,8 +19,8 @@ function(milldyn_assert_no_ndebug)
       CMAKE_CXX_FLAGS_MINSIZEREL CMAKE_CXX_FLAGS_DEBUG)
     if("${${flag_var}}" MATCHES "NDEBUG")
       message(FATAL_ERROR "${flag_var} contains NDEBUG ('${${flag_var}}'). "
-        "Simbody code must not be compiled with -DNDEBUG: see "
-        "docs/building.md (Debian's Simbody is built without it).")
+        "Simbody code must not be compiled with -DNDEBUG against Debian's checked "
+        "Simbody (MILLDYN_ENGINE=debian): see docs/building.md.")
     endif()
   endforeach()
   get_directory_property(defs COMPILE_DEFINITIONS)

@@ -12,6 +12,7 @@
 #include "driver/outputs/Schematic.h"
 #include "driver/outputs/Writers.h"
 #include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/EngineTag.h"
 #include "validation/cases/ValidationCases.h"
 #include "validation/report/ReportWriter.h"
 
@@ -525,7 +526,7 @@ int commandCompletion(std::ostream& out) {
 int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     try {
         if (!args.empty() && args[0] == "--version") {
-            out << "milldyn " << milldynVersion() << "\n";
+            out << "milldyn " << milldynVersion() << "\n" << kSimbodyEngine << "\n";
             return 0;
         }
         std::string helpText;

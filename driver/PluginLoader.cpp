@@ -1,6 +1,7 @@
 #include "driver/PluginLoader.h"
 
 #include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/EngineTag.h"
 
 #include <dlfcn.h>
 
@@ -28,9 +29,11 @@ void loadPlugin(const std::string& path) {
     if (abi() != kPluginAbiVersion)
         throw fail("built against plugin ABI " + std::to_string(abi()) + ", this milldyn has ABI " +
                    std::to_string(kPluginAbiVersion) + ": rebuild the plugin");
-    if (std::string(simbody()) != MILLDYN_SIMBODY_VERSION)
+    // The engine tag is the Simbody version and the NDEBUG setting ("3.7 Release",
+    // "3.7 checked"): object layouts differ between the two settings.
+    if (std::string(simbody()) != MILLDYN_ENGINE_TAG)
         throw fail(std::string("built against Simbody ") + simbody() + ", this milldyn uses Simbody " +
-                   MILLDYN_SIMBODY_VERSION + ": rebuild the plugin");
+                   MILLDYN_ENGINE_TAG + ": rebuild the plugin against the same engine (docs/building.md)");
     try {
         reg(ElementRegistry::instance());
     } catch (const std::invalid_argument& e) {

@@ -8,7 +8,8 @@ namespace milldyn {
 
 /// Loads the library and registers its element types. Throws SpecError
 /// (located at `<--plugin path>`) when it cannot be loaded, lacks the entry
-/// points, was built against another plugin ABI or Simbody version, or
+/// points, was built against another plugin ABI or engine (Simbody version
+/// and NDEBUG setting, plugins/scene/EngineTag.h), or
 /// registers a type that exists already.
 void loadPlugin(const std::string& path);
 

@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config
   libsimbody-dev libeigen3-dev libyaml-cpp-dev nlohmann-json3-dev libcli11-dev
+  ninja-build dpkg-dev liblapack-dev libblas-dev   # the Release engine's build (scripts/build-engine.sh)
   googletest libgtest-dev
   gnuplot-nox fonts-dejavu-core
   openmpi-bin libopenmpi-dev

@@ -1,6 +1,7 @@
 #include "driver/outputs/Writers.h"
 
 #include "driver/outputs/AtomicFile.h"
+#include "plugins/scene/EngineTag.h"
 
 #include <nlohmann/json.hpp>
 
@@ -59,7 +60,7 @@ std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& resul
     j["tables"].push_back(result.tableName + ".csv");
     for (const auto& t : result.extraTables) j["tables"].push_back(t.name + ".csv");
     j["run"] = {{"wall_time", info.wallSeconds}, {"wall_time_unit", "s"}, {"host", info.host},
-                {"milldyn_version", info.version}};
+                {"milldyn_version", info.version}, {"engine", kSimbodyEngine}};
     return j.dump(2) + "\n";
 }
 

@@ -2,6 +2,7 @@
 // registry the built-ins use; libraries of another ABI are refused.
 
 #include <gtest/gtest.h>
+#include "plugins/scene/EngineTag.h"
 
 #include <nlohmann/json.hpp>
 
@@ -61,6 +62,17 @@ TEST(PluginTest, LibraryOfAnotherAbiIsRefusedWithExitTwo) {
     EXPECT_EQ(r.code, 2);
     EXPECT_NE(r.err.find("plugin ABI"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("<--plugin "), std::string::npos) << r.err;
+}
+
+TEST(PluginTest, LibraryOfTheOtherNdebugSettingIsRefusedWithExitTwo) {
+    const Result r = runMilldyn("run " + kModel + " --plugin " + MILLDYN_WRONG_ENGINE_PLUGIN);
+    EXPECT_EQ(r.code, 2);
+    // Names both engine tags: the plugin's (the other NDEBUG setting) and this milldyn's.
+    const std::string other = std::string(MILLDYN_SIMBODY_VERSION) +
+                              (std::string(MILLDYN_SIMBODY_BUILD) == "Release" ? " checked" : " Release");
+    EXPECT_NE(r.err.find("built against Simbody " + other), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(std::string("this milldyn uses Simbody ") + MILLDYN_ENGINE_TAG), std::string::npos)
+        << r.err;
 }
 
 TEST(PluginTest, MissingLibraryIsRefusedWithExitTwo) {
