@@ -930,9 +930,9 @@ private:
             for (YAML::Node& node : nodes) {
                 if (node.IsSequence()) {
                     // `name@level`: only the copy of that fidelity level.
-                    const auto at = part.find('@');
-                    const std::string itemName = part.substr(0, at);
-                    const std::string level = at == std::string::npos ? "" : part.substr(at + 1);
+                    const auto levelMark = part.find('@');
+                    const std::string itemName = part.substr(0, levelMark);
+                    const std::string level = levelMark == std::string::npos ? "" : part.substr(levelMark + 1);
                     auto ofLevel = [&](const YAML::Node& item) {
                         if (level.empty()) return true;
                         const YAML::Node levels = item["fidelity"];
