@@ -331,6 +331,11 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
         out << "sweep of " << a.model << ": " << summary.total << " points (" << summary.run << " run, "
             << summary.resumed << " resumed), " << summary.failed << " not ok, " << options.jobs << " jobs, "
             << std::setprecision(3) << wall << " s wall\n  wrote " << summary.files.front() << "\n";
+    if (summary.total > 0 && summary.failed == summary.total) {
+        err << "milldyn: sweep failed: every one of its " << summary.total << " points failed (see the diagnostic column of "
+            << summary.files.front() << ")\n";
+        return 1;
+    }
     return 0;
 }
 

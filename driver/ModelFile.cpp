@@ -4,8 +4,15 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -54,19 +61,113 @@ std::string formatNumber(double v) {
     return s.str();
 }
 
+/// Model and part files larger than this are refused before reading.
+constexpr std::size_t kMaxModelFileBytes = 64u << 20;
+
+/// Reads a regular file whole. A FIFO, device (/dev/zero) or directory is
+/// refused without blocking: opened non-blocking and checked with fstat on
+/// the open descriptor. Returns false with the reason.
+bool readRegularFile(const std::string& path, std::string& text, std::string& why) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        why = errno == ENOENT ? "no such file" : std::strerror(errno);
+        return false;
+    }
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        why = S_ISDIR(st.st_mode) ? "it is a directory, not a file"
+                                  : "it is not a regular file (a FIFO or device would never end)";
+        return false;
+    }
+    if (static_cast<std::size_t>(st.st_size) > kMaxModelFileBytes) {
+        ::close(fd);
+        why = "it is larger than " + std::to_string(kMaxModelFileBytes >> 20) + " MiB";
+        return false;
+    }
+    text.clear();
+    char buf[65536];
+    for (;;) {
+        const ssize_t n = ::read(fd, buf, sizeof buf);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            why = std::string("read error: ") + std::strerror(errno);
+            ::close(fd);
+            return false;
+        }
+        if (n == 0) break;
+        text.append(buf, static_cast<std::size_t>(n));
+        if (text.size() > kMaxModelFileBytes) {  // grew while being read
+            ::close(fd);
+            why = "it is larger than " + std::to_string(kMaxModelFileBytes >> 20) + " MiB";
+            return false;
+        }
+    }
+    ::close(fd);
+    return true;
+}
+
+/// Model text must be UTF-8 without NUL bytes (YAML 1.2; the JSON outputs
+/// need it too): the first offending byte is located by line and column.
+void checkModelText(const std::string& text, const std::string& file, const std::string& includedFrom) {
+    int line = 1, column = 1;
+    const auto* p = reinterpret_cast<const unsigned char*>(text.data());
+    const std::size_t n = text.size();
+    for (std::size_t i = 0; i < n;) {
+        const unsigned char c = p[i];
+        auto fail = [&](const std::string& reason) {
+            throw SpecError({file, line, column, includedFrom}, "<text>", reason);
+        };
+        if (c == 0) fail("NUL byte in the model text");
+        std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+        bool ok = len > 0 && i + len <= n;
+        for (std::size_t k = 1; ok && k < len; ++k) ok = (p[i + k] & 0xC0) == 0x80;
+        if (ok && len > 1) {  // no overlong forms, surrogates or code points above U+10FFFF
+            unsigned cp = c & (0xFF >> (len + 1));
+            for (std::size_t k = 1; k < len; ++k) cp = (cp << 6) | (p[i + k] & 0x3F);
+            ok = cp >= (len == 2 ? 0x80u : len == 3 ? 0x800u : 0x10000u) && cp <= 0x10FFFF && !(cp >= 0xD800 && cp <= 0xDFFF);
+        }
+        if (!ok) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "0x%02X", c);
+            fail(std::string("byte ") + hex + " is not UTF-8 (model files are UTF-8 text)");
+        }
+        if (c == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+        i += len;
+    }
+}
+
+/// Parses the single YAML document of `text`; a second document is refused.
+YAML::Node loadOneDocument(const std::string& text, const std::string& file, const std::string& includedFrom) {
+    std::vector<YAML::Node> docs;
+    try {
+        docs = YAML::LoadAll(text);
+    } catch (const YAML::ParserException& e) {
+        throw SpecError({file, e.mark.line + 1, e.mark.column + 1, includedFrom}, "", "malformed YAML: " + e.msg);
+    }
+    if (docs.size() > 1) {
+        const YAML::Mark m = docs[1].Mark();
+        throw SpecError({file, m.line >= 0 ? m.line + 1 : 1, m.column >= 0 ? m.column + 1 : 1, includedFrom}, "<document>",
+                        "a second YAML document (after '---'): a model file holds one");
+    }
+    return docs.empty() ? YAML::Node() : docs[0];
+}
+
 /// Reads one YAML document into a ModelSpec, remembering which nodes came
 /// from --set so their diagnostics point at the command line.
 class Reader {
 public:
-    Reader(std::string file, const ModelFileReader& lookups) : m_file(std::move(file)), m_lookups(lookups) {}
+    Reader(std::string file, const ModelFileReader& lookups, std::string* resolved = nullptr)
+        : m_file(std::move(file)), m_lookups(lookups), m_resolved(resolved) {}
 
     ModelSpec read(const std::string& text, const std::vector<Override>& overrides) {
-        YAML::Node root;
-        try {
-            root = YAML::Load(text);
-        } catch (const YAML::ParserException& e) {
-            throw SpecError({m_file, e.mark.line + 1, e.mark.column + 1}, "", "malformed YAML: " + e.msg);
-        }
+        checkModelText(text, m_file, "");
+        YAML::Node root = loadOneDocument(text, m_file, "");
         if (!root || root.IsNull()) throw SpecError({m_file, 1, 1}, "", "the model file is empty");
         requireMap(root, "<document>");
         std::vector<OpenFile> open{{canonicalPath(m_file), m_file}};
@@ -80,6 +181,7 @@ public:
         applyPreset(root, spec);
         for (const auto& o : overrides)
             if (!isPresetPath(o)) applyOverride(root, o);
+        if (m_resolved) *m_resolved = YAML::Dump(root);
 
         spec.file = m_file;
         checkKeys(root, "", {"format_version", "name", "description", "fidelity", "bodies", "elements",
@@ -113,6 +215,7 @@ public:
 private:
     std::string m_file;
     const ModelFileReader& m_lookups;
+    std::string* m_resolved;  ///< if set: the document after includes, preset and --set
     std::vector<std::pair<YAML::Node, SourceLocation>> m_overridden;  // node, "<--set path>"
     struct AddedKey {
         YAML::Node map;
@@ -615,9 +718,10 @@ private:
         }
         if (n["accuracy"]) {
             integ.accuracy = readNumber(n["accuracy"], "integrator.accuracy", "1");
-            if (!(integ.accuracy > 0 && integ.accuracy <= 1))
+            // Simbody asserts 0 < accuracy < 1 (an abort, not an exception).
+            if (!(integ.accuracy > 0 && integ.accuracy < 1))
                 throw error(n["accuracy"], "integrator.accuracy",
-                            "must lie in (0, 1], got " + formatNumber(integ.accuracy));
+                            "must lie in (0, 1) (Simbody refuses 1 and above), got " + formatNumber(integ.accuracy));
         }
         if (n["max_step"]) {
             integ.maxStep = readNumber(n["max_step"], "integrator.max_step", "s");
@@ -773,28 +877,14 @@ private:
             }
         if (open.size() > 32) throw error(fileNode, "include", "includes nest deeper than 32 files");
 
-        std::error_code ec;
-        if (std::filesystem::is_directory(file, ec))
-            throw error(fileNode, "include", "'" + file + "' is a directory, not a part file");
-        if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
-            throw error(fileNode, "include", "'" + file + "' is not a regular file");  // a FIFO or device would hang
-        std::ifstream in(file, std::ios::binary);
-        if (!in)
-            throw error(fileNode, "include",
-                        "cannot open '" + file + "'" +
-                            (std::filesystem::exists(file, ec) ? " (permission denied?)" : ": no such file"));
-        std::ostringstream text;
-        text << in.rdbuf();
+        std::string text, why;
+        if (!readRegularFile(file, text, why)) throw error(fileNode, "include", "cannot open '" + file + "': " + why);
 
         const std::string chain = formatLocation(entryAt);
         m_inclusions.push_back({file, chain});
         const std::size_t inclusion = m_inclusions.size() - 1;
-        YAML::Node part;
-        try {
-            part = YAML::Load(text.str());
-        } catch (const YAML::ParserException& e) {
-            throw SpecError({file, e.mark.line + 1, e.mark.column + 1, chain}, "", "malformed YAML: " + e.msg);
-        }
+        checkModelText(text, file, chain);
+        YAML::Node part = loadOneDocument(text, file, chain);
         if (!part || part.IsNull()) throw SpecError({file, 1, 1, chain}, "", "the part file is empty");
         registerNodes(part, inclusion);
         requireMap(part, "<document>");
@@ -980,19 +1070,10 @@ ModelSpec readModelText(const std::string& text, const std::string& displayName,
 }
 
 ModelSpec readModelFile(const std::string& path, const ModelFileReader& reader,
-                        const std::vector<Override>& overrides) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw SpecError({path, 1, 1}, "<file>", "is a directory, not a model file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw SpecError({path, 1, 1}, "<file>",
-                        std::filesystem::exists(path, ec) ? "cannot open the model file (permission denied?)"
-                                                          : "cannot open the model file: no such file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw SpecError({path, 1, 1}, "<file>", "cannot read the model file");
-    return readModelText(text.str(), path, reader, overrides);
+                        const std::vector<Override>& overrides, std::string* resolvedDocument) {
+    std::string text, why;
+    if (!readRegularFile(path, text, why)) throw SpecError({path, 1, 1}, "<file>", "cannot open the model file: " + why);
+    return Reader(path, reader, resolvedDocument).read(text, overrides);
 }
 
 }  // namespace milldyn

@@ -235,7 +235,9 @@ AnalysisResult runModelFile(const std::string& path, const std::vector<Override>
     return runAnalysis(spec);
 }
 
-AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
+namespace {
+
+AnalysisResult dispatchAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     // A charge held at its lag is a condition of one instant (its wall
     // torque is solved per configuration), not a law a time step can use:
     // kinetostatics, or a transient that is replayed instant by instant
@@ -253,6 +255,19 @@ AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, co
     if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
     if (spec.scenario.type == "resonance_map") return runResonanceMap(spec, progress);
     throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");
+}
+
+}  // namespace
+
+AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
+    // Simbody reports refused calls (a singular assembly, a bad argument) as
+    // SimTK::Exception::Base: one located line, never "internal error".
+    try {
+        return dispatchAnalysis(spec, progress, observer);
+    } catch (const SimTK::Exception::Base& e) {
+        throw AnalysisError(spec.scenario.type + " analysis of " + spec.name + ": Simbody refused it: " +
+                            simbodyMessage(e.what()));
+    }
 }
 
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role) {

@@ -23,7 +23,11 @@ void commitFile(const std::string& from, const std::string& to) {
     }
 }
 
-void writeFileAtomically(const std::string& path, const std::string& content) {
+namespace {
+
+/// Writes `content` to a new temporary name beside `path`, flushed to disk;
+/// returns that name. Throws OutputError (and leaves no temporary).
+std::string writeTemporary(const std::string& path, const std::string& content) {
     const std::string tmp = temporaryNameBeside(path);
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) throw OutputError("cannot write " + path + ": " + std::strerror(errno));
@@ -47,7 +51,25 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
         std::remove(tmp.c_str());
         throw OutputError("cannot write " + path + ": " + reason);
     }
-    commitFile(tmp, path);
+    return tmp;
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::string& path, const std::string& content) {
+    commitFile(writeTemporary(path, content), path);
+}
+
+bool createFileExclusively(const std::string& path, const std::string& content) {
+    const std::string tmp = writeTemporary(path, content);
+    // link() fails with EEXIST if the name exists: of two processes racing
+    // for the name, exactly one gets it, and it gets the whole content.
+    const int rc = ::link(tmp.c_str(), path.c_str());
+    const int err = errno;
+    std::remove(tmp.c_str());
+    if (rc == 0) return true;
+    if (err == EEXIST) return false;
+    throw OutputError("cannot write " + path + ": " + std::strerror(err));
 }
 
 void ensureDirectory(const std::string& dir) {

@@ -17,6 +17,10 @@ public:
 /// Writes `content` to `path` atomically. Throws OutputError.
 void writeFileAtomically(const std::string& path, const std::string& content);
 
+/// Creates `path` with `content` (complete, as writeFileAtomically) only if
+/// no file of that name exists; false if one does. Throws OutputError.
+bool createFileExclusively(const std::string& path, const std::string& content);
+
 /// A temporary name beside `path` (same directory, unique to this process
 /// and call), for tools that write files themselves (gnuplot).
 std::string temporaryNameBeside(const std::string& path);
