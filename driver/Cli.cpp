@@ -7,6 +7,7 @@
 #include "driver/SweepMpi.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
+#include "driver/outputs/OutputSet.h"
 #include "driver/outputs/Schematic.h"
 #include "driver/outputs/Writers.h"
 #include "plugins/scene/ElementRegistry.h"
@@ -153,7 +154,7 @@ std::string hostName() {
 
 int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     const ModelSpec spec = readModelFile(a.model, defaultModelReader(), a.overrides);
-    ensureDirectory(a.outDir);
+    OutputSet outputs(a.outDir);  // all new files or the old set untouched (docs/reliability.md)
     const bool showProgress = !a.quiet && ::isatty(STDERR_FILENO);
     auto lastReport = std::chrono::steady_clock::now();
     ProgressFn progress;
@@ -200,13 +201,14 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
             throw AnalysisError("result " + r.name + " is not finite (the analysis diverged)");
 
     std::string warning;
-    auto files = writeResultFiles(a.outDir, spec, result, info, warning);
+    auto files = writeResultFiles(outputs.staging(), spec, result, info, warning);
     if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
     if (recorder) {
         std::string w;
-        for (const auto& f : writeSchematics(a.outDir, spec.name, recorder->frames(), angles, w)) files.push_back(f);
+        for (const auto& f : writeSchematics(outputs.staging(), spec.name, recorder->frames(), angles, w)) files.push_back(f);
         if (!w.empty()) err << "milldyn: warning: " << w << "\n";
     }
+    files = outputs.commit(files);
 
     if (a.quiet) return 0;
     out << spec.name << "\n  analysis: " << result.analysis << "\n";

@@ -107,8 +107,8 @@ bool readRegularFile(const std::string& path, std::string& text, std::string& wh
     return true;
 }
 
-/// Model text must be UTF-8 without NUL bytes (YAML 1.2; the JSON outputs
-/// need it too): the first offending byte is located by line and column.
+}  // namespace
+
 void checkModelText(const std::string& text, const std::string& file, const std::string& includedFrom) {
     int line = 1, column = 1;
     const auto* p = reinterpret_cast<const unsigned char*>(text.data());
@@ -142,6 +142,8 @@ void checkModelText(const std::string& text, const std::string& file, const std:
     }
 }
 
+namespace {
+
 /// Parses the single YAML document of `text`; a second document is refused.
 YAML::Node loadOneDocument(const std::string& text, const std::string& file, const std::string& includedFrom) {
     std::vector<YAML::Node> docs;
@@ -167,6 +169,7 @@ public:
 
     ModelSpec read(const std::string& text, const std::vector<Override>& overrides) {
         checkModelText(text, m_file, "");
+        for (const auto& o : overrides) checkModelText(o.path + "=" + o.value, "<--set " + o.path + ">", "");
         YAML::Node root = loadOneDocument(text, m_file, "");
         if (!root || root.IsNull()) throw SpecError({m_file, 1, 1}, "", "the model file is empty");
         requireMap(root, "<document>");

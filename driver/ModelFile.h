@@ -28,6 +28,11 @@ struct Override {
     std::string value;
 };
 
+/// Model text must be UTF-8 without NUL bytes (YAML 1.2; the JSON outputs
+/// need it too): throws SpecError at the line and column of the first
+/// offending byte of `text`, read from `file`.
+void checkModelText(const std::string& text, const std::string& file, const std::string& includedFrom = {});
+
 /// Parses "path=value"; throws SpecError located at the command line.
 Override parseOverride(const std::string& text);
 

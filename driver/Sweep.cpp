@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -36,7 +37,12 @@ std::pair<double, std::string> splitValue(const std::string& option, const std::
     const char* begin = text.c_str();
     char* end = nullptr;
     const double v = std::strtod(begin, &end);
-    if (end == begin || !std::isfinite(v)) throw optionError(option, all, "'" + text + "' is not a number");
+    // Decimal numbers only, as the model reader takes them (strtod would
+    // also take hex and "infinity").
+    const bool decimal = end != begin && std::all_of(begin, static_cast<const char*>(end), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c)) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E';
+    });
+    if (!decimal || !std::isfinite(v)) throw optionError(option, all, "'" + text + "' is not a number");
     std::string unit(end);
     unit.erase(0, unit.find_first_not_of(' '));
     unit.erase(unit.find_last_not_of(' ') + 1);
@@ -45,6 +51,7 @@ std::pair<double, std::string> splitValue(const std::string& option, const std::
 
 /// Splits "path=rest" and rest on ':'.
 std::pair<std::string, std::vector<std::string>> splitSpec(const std::string& option, const std::string& text) {
+    checkModelText(text, "<" + option + ">");  // the path lands in JSON point files
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0) throw optionError(option, text, "expected path=a:b" + std::string(option == "--grid" ? ":n" : ""));
     std::vector<std::string> parts;

@@ -1,5 +1,7 @@
 #include "driver/outputs/AtomicFile.h"
 
+#include "driver/outputs/OutputSet.h"
+
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -12,15 +14,23 @@ namespace milldyn {
 
 std::string temporaryNameBeside(const std::string& path) {
     static std::atomic<unsigned> counter{0};
-    return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    std::string name = path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    registerTemporary(name);  // removed on SIGINT/SIGTERM
+    return name;
+}
+
+void discardTemporary(const std::string& path) {
+    std::remove(path.c_str());
+    forgetTemporary(path);
 }
 
 void commitFile(const std::string& from, const std::string& to) {
     if (std::rename(from.c_str(), to.c_str()) != 0) {
         const std::string reason = std::strerror(errno);
-        std::remove(from.c_str());
+        discardTemporary(from);
         throw OutputError("cannot write " + to + ": " + reason);
     }
+    forgetTemporary(from);
 }
 
 namespace {
@@ -39,7 +49,7 @@ std::string writeTemporary(const std::string& path, const std::string& content) 
         if (n <= 0) {
             const std::string reason = std::strerror(errno);
             ::close(fd);
-            std::remove(tmp.c_str());
+            discardTemporary(tmp);
             throw OutputError("cannot write " + path + ": " + reason);
         }
         data += n;
@@ -48,7 +58,7 @@ std::string writeTemporary(const std::string& path, const std::string& content) 
     // The data must be on disk before the name points at it.
     if (::fsync(fd) != 0 || ::close(fd) != 0) {
         const std::string reason = std::strerror(errno);
-        std::remove(tmp.c_str());
+        discardTemporary(tmp);
         throw OutputError("cannot write " + path + ": " + reason);
     }
     return tmp;
@@ -66,7 +76,7 @@ bool createFileExclusively(const std::string& path, const std::string& content) 
     // for the name, exactly one gets it, and it gets the whole content.
     const int rc = ::link(tmp.c_str(), path.c_str());
     const int err = errno;
-    std::remove(tmp.c_str());
+    discardTemporary(tmp);
     if (rc == 0) return true;
     if (err == EEXIST) return false;
     throw OutputError("cannot write " + path + ": " + std::strerror(err));
