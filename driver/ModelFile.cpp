@@ -17,6 +17,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <unordered_map>
 #include <sstream>
 
 namespace milldyn {
@@ -962,13 +963,37 @@ private:
     }
 
     /// How many places of the document hold `target` (an anchored block
-    /// used through aliases is one node at several places).
-    static int occurrences(const YAML::Node& node, const YAML::Node& target) {
+    /// used through aliases is one node at several places), counted up to 2.
+    /// Each distinct node is visited once (the count of paths from it is
+    /// remembered), so a file of nested aliases (a "billion laughs") takes
+    /// time linear in its size, not in its expansion.
+    static int occurrences(const YAML::Node& root, const YAML::Node& target) {
+        NodeMemo memo;
+        return occurrencesFrom(root, target, memo);
+    }
+    /// Nodes by identity (Node::is), bucketed by their source position.
+    struct NodeMemo {
+        std::unordered_map<long long, std::vector<std::pair<YAML::Node, int>>> buckets;
+        static long long key(const YAML::Node& n) { return n.Mark().pos; }
+        const int* find(const YAML::Node& n) const {
+            const auto it = buckets.find(key(n));
+            if (it == buckets.end()) return nullptr;
+            for (const auto& e : it->second)
+                if (e.first.is(n)) return &e.second;
+            return nullptr;
+        }
+        void put(const YAML::Node& n, int v) { buckets[key(n)].emplace_back(n, v); }
+    };
+    static int occurrencesFrom(const YAML::Node& node, const YAML::Node& target, NodeMemo& memo) {
+        if (const int* known = memo.find(node)) return *known;
         int count = node.is(target) ? 1 : 0;
         if (node.IsMap())
-            for (auto it = node.begin(); it != node.end(); ++it) count += occurrences(it->second, target);
+            for (auto it = node.begin(); it != node.end() && count < 2; ++it)
+                count += occurrencesFrom(it->second, target, memo);
         else if (node.IsSequence())
-            for (const auto& child : node) count += occurrences(child, target);
+            for (auto it = node.begin(); it != node.end() && count < 2; ++it) count += occurrencesFrom(*it, target, memo);
+        count = std::min(count, 2);
+        memo.put(node, count);
         return count;
     }
 

@@ -238,6 +238,17 @@ TEST(ModelFileReading, SecondYamlDocumentIsRefused) {
     EXPECT_TRUE(contains(e.what(), "a second YAML document")) << e.formatted();
 }
 
+// Item 8: 1 kB of nested aliases plus any --set took exponential time in
+// the alias check (3^30 paths here: without the fix this never ends).
+TEST(ModelFileReading, AliasBombWithASetIsCheckedInLinearTime) {
+    std::string text = slurp(kMinimal) + "x0: &a0 [1, 2]\n";
+    for (int i = 1; i < 30; ++i)
+        text += "x" + std::to_string(i) + ": &a" + std::to_string(i) + " [*a" + std::to_string(i - 1) + ", *a" +
+                std::to_string(i - 1) + ", *a" + std::to_string(i - 1) + "]\n";
+    const SpecError e = test::readErrorOf("bomb.yaml", text, {{"scenario.end_time", "1 s"}});
+    EXPECT_TRUE(contains(e.what(), "unknown key 'x0'")) << e.formatted();
+}
+
 // Item 3: half_angle 1e-7 rad and fill 1e-300 gave "internal error"
 // (a negative central inertia from cancellation) when the scene was built.
 TEST(TinyChargeSegments, BuildAtTinyHalfAnglesAndFills) {
