@@ -213,8 +213,29 @@ public:
         if (!spec.fidelity.empty()) keepSelectedFidelity(spec);
         if (root["integrator"]) readIntegrator(root["integrator"], spec.integrator);
         if (root["outputs"]) readOutputs(root["outputs"], spec.outputs);
+        checkRunSize(spec);
         return spec;
     }
+
+    /// Work the run would do, refused up front with its estimate rather
+    /// than found out after hours or gigabytes (issue 16, item 9).
+    static void checkRunSize(const ModelSpec& spec) {
+        if (spec.scenario.type != "transient" || !spec.scenario.has("end_time")) return;
+        const double end = spec.scenario.number("end_time");
+        const double samples = end / spec.outputs.sampleInterval;
+        if (samples > kMaxSamples)
+            throw spec.scenario.error(
+                "end_time", "end_time " + formatNumber(end) + " s at outputs.sample_interval " +
+                                formatNumber(spec.outputs.sampleInterval) + " s would write " + formatNumber(samples) +
+                                " rows, more than " + formatNumber(kMaxSamples) + ": use a longer sample_interval");
+        if (spec.integrator.maxStep > 0 && end / spec.integrator.maxStep > kMaxSteps)
+            throw spec.scenario.error("end_time", "end_time " + formatNumber(end) + " s at integrator.max_step " +
+                                                      formatNumber(spec.integrator.maxStep) + " s needs at least " +
+                                                      formatNumber(end / spec.integrator.maxStep) + " steps, more than " +
+                                                      formatNumber(kMaxSteps) + ": use a longer max_step");
+    }
+    static constexpr double kMaxSamples = 1e7;  ///< rows of one run's table
+    static constexpr double kMaxSteps = 1e9;    ///< steps the max_step forces
 
 private:
     std::string m_file;

@@ -152,7 +152,7 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
         P::quantity("angle_from", "rad", "first carrier angle").optional(0.0),
         P::quantity("angle_to", "rad", "last carrier angle").optional(2 * M_PI),
         P::quantity("angle_points", "1", "angles, evenly spaced, both ends included").optional(37.0).atLeast(1).atMost(
-            1e7),
+            100000),
         P::quantity("carrier_speed", "rad/s", "carrier speed ω1").optional(0.0),
         P::quantity("time", "s", "instant of the drive laws (ε(t) of a CarrierDrive)").optional(0.0).atLeast(0),
         P::quantity("tolerance", "1", "relative tolerance of wall torques and journal reactions")

@@ -187,6 +187,25 @@ TEST(SweepBounds, OversizedGridIsRefusedUpFrontWithItsSize) {
     }
 }
 
+// Item 9: sample_interval 1e-9 s or max_step 1e-12 s ran until memory or
+// patience ran out; now refused with the estimate.
+TEST(RunBounds, TinySampleIntervalOrMaxStepIsRefusedWithTheEstimate) {
+    const std::string model = kModels + "burr_mill_5p5kW_idle.yaml";
+    try {
+        readModelFile(model, defaultModelReader(), {{"outputs.sample_interval", "1e-9 s"}});
+        ADD_FAILURE() << "accepted 7e9 rows";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.key(), "scenario.end_time") << e.formatted();
+        EXPECT_TRUE(contains(e.what(), "would write 7000000000 rows")) << e.formatted();
+    }
+    try {
+        readModelFile(model, defaultModelReader(), {{"integrator.max_step", "1e-12 s"}});
+        ADD_FAILURE() << "accepted 7e12 steps";
+    } catch (const SpecError& e) {
+        EXPECT_TRUE(contains(e.what(), "needs at least 7e+12 steps")) << e.formatted();
+    }
+}
+
 // Item 2: accuracy 1 passed the reader and Simbody's assert aborted (134).
 TEST(ReaderRefusesWhatSimbodyWould, AccuracyOneIsASpecError) {
     const std::string text = slurp(kMinimal);
