@@ -9,6 +9,8 @@
 #include <fstream>
 #include <string>
 
+#include <sys/stat.h>
+
 namespace milldyn {
 namespace {
 
@@ -37,6 +39,22 @@ protected:
         std::ofstream(bin / name) << "#!/bin/sh\n" << body << "\n";
         fs::permissions(bin / name, fs::perms::owner_all);
         return "PATH=" + bin.string() + ":$PATH ";
+    }
+
+    /// Two 0.01 kg*m^2 shafts joined by 1e9 N*m/rad (omega ~ 4.5e5 rad/s):
+    /// semi-explicit Euler at 10 ms diverges within a few steps
+    /// (tests/driver/DivergenceTest.cpp), an error-controlled integrator
+    /// takes millions of steps.
+    fs::path stiffPair(const std::string& file, const std::string& integrator, const std::string& endTime) const {
+        const fs::path model = m_dir / file;
+        std::ofstream(model) << "format_version: 1\nname: stiff\nbodies:\n"
+                                "  - {name: a, inertia: 0.01 kg*m^2, joint: {type: pin}, initial_angle: 0.001 rad}\n"
+                                "  - {name: b, inertia: 0.01 kg*m^2, joint: {type: pin}}\n"
+                                "elements:\n  - {type: TorsionalCoupling, name: shaft, bodies: [a, b], stiffness: 1e9 N*m/rad}\n"
+                                "scenario: {analysis: transient, initial_state: file, end_time: "
+                             << endTime << "}\nintegrator: " << integrator
+                             << "\noutputs: {sample_interval: 1 ms, plots: false}\n";
+        return model;
     }
 
     /// Starts milldyn in the background, sends `sig` after `delay` s, and
@@ -80,22 +98,12 @@ TEST_F(ReliabilityCli, NewSetRemovesThePreviousSetsOtherFiles) {
 // A failed run (here: a diverging integration, exit 1) leaves the
 // previous set as it was, and no staging directory behind.
 TEST_F(ReliabilityCli, FailedRunLeavesThePreviousSetUntouched) {
-    // 1e9 N*m/rad between 0.01 kg*m^2 shafts: semi-explicit Euler at 10 ms
-    // diverges (omega*h ~ 4500, tests/driver/DivergenceTest.cpp); an
-    // error-controlled integrator does not.
-    const fs::path model = m_dir / "unstable.yaml";
-    std::ofstream(model) << "format_version: 1\nname: unstable\nbodies:\n"
-                            "  - {name: a, inertia: 0.01 kg*m^2, joint: {type: pin}, initial_angle: 0.001 rad}\n"
-                            "  - {name: b, inertia: 0.01 kg*m^2, joint: {type: pin}}\n"
-                            "elements:\n  - {type: TorsionalCoupling, name: shaft, bodies: [a, b], stiffness: 1e9 N*m/rad}\n"
-                            "scenario: {analysis: transient, initial_state: file, end_time: 0.05 s}\n"
-                            "integrator: {name: SemiExplicitEuler, max_step: 10 ms}\n"
-                            "outputs: {sample_interval: 10 ms, plots: false}\n";
+    const fs::path model = stiffPair("unstable.yaml", "{name: SemiExplicitEuler, max_step: 10 ms}", "5 s");
     const std::string out = (m_dir / "o").string();
     auto r = run("", "run " + model.string() + " --integrator RungeKuttaMerson --set integrator.max_step=0s --end-time '2 ms' --out " + out);
     ASSERT_EQ(r.code, 0) << r.err;
     const std::string before = test::slurp(out + "/timeseries.csv");
-    r = run("", "run " + model.string() + " --end-time '5 s' --out " + out);
+    r = run("", "run " + model.string() + " --out " + out);
     EXPECT_EQ(r.code, 1) << r.err;
     EXPECT_EQ(test::slurp(out + "/timeseries.csv"), before);
     EXPECT_TRUE(leftovers(m_dir / "o").empty());
@@ -103,16 +111,8 @@ TEST_F(ReliabilityCli, FailedRunLeavesThePreviousSetUntouched) {
 
 // SIGTERM left *.tmp.* files; Ctrl-C during plotting was ignored (exit 0).
 TEST_F(ReliabilityCli, SigtermEndsTheRunNonZeroWithoutTemporaries) {
-    // A stiff pair (omega ~ 4.5e5 rad/s) under an error-controlled
-    // integrator: millions of steps, a run that is still going after 1 s.
-    const fs::path model = m_dir / "stiff.yaml";
-    std::ofstream(model) << "format_version: 1\nname: stiff\nbodies:\n"
-                            "  - {name: a, inertia: 0.01 kg*m^2, joint: {type: pin}, initial_angle: 0.001 rad}\n"
-                            "  - {name: b, inertia: 0.01 kg*m^2, joint: {type: pin}}\n"
-                            "elements:\n  - {type: TorsionalCoupling, name: shaft, bodies: [a, b], stiffness: 1e9 N*m/rad}\n"
-                            "scenario: {analysis: transient, initial_state: file, end_time: 1000 s}\n"
-                            "integrator: {name: RungeKuttaMerson}\n"
-                            "outputs: {sample_interval: 1 ms, plots: false}\n";
+    // Still going after 1 s: millions of steps.
+    const fs::path model = stiffPair("stiff.yaml", "{name: RungeKuttaMerson}", "1000 s");
     const std::string out = (m_dir / "o").string();
     const int code = killedAfter("", "run " + model.string() + " --out " + out, "TERM", 1.0);
     EXPECT_EQ(code, 128 + 15);
@@ -155,6 +155,23 @@ TEST_F(ReliabilityCli, NonUtf8InSetOrGridIsRefusedAtTheReader) {
                     (m_dir / "s").string());
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_NE(r.err.find("is not UTF-8"), std::string::npos) << r.err;
+}
+
+// `--plugin x.so` searched the system library path, not the working
+// directory; a FIFO as plugin blocked dlopen.
+TEST_F(ReliabilityCli, PluginWithoutSlashIsFoundInTheWorkingDirectoryAndFifoRefused) {
+    const fs::path lib(MILLDYN_EXAMPLE_PLUGIN);
+    const std::string model = std::string(MILLDYN_SOURCE_DIR) + "/tests/testdata/plugin_constant_torque.yaml";
+    auto r = run("cd " + lib.parent_path().string() + " && ", "info " + model + " --plugin " + lib.filename().string());
+    EXPECT_EQ(r.code, 0) << r.err;
+    r = run("cd " + m_dir.string() + " && ", "info " + model + " --plugin " + lib.filename().string());
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("looked for in the working directory"), std::string::npos) << r.err;
+    const fs::path fifo = m_dir / "fifo.so";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    r = run("", "info " + model + " --plugin " + fifo.string());
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
 }
 
 TEST_F(ReliabilityCli, GridTakesDecimalNumbersOnly) {

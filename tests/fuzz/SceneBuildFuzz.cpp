@@ -6,6 +6,7 @@
 // rejects), any other exception, a crash, a leak or a hang is a finding.
 
 #include "driver/ModelFile.h"
+#include "tests/fuzz/FuzzInput.h"
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 
@@ -17,14 +18,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const milldyn::ModelFileReader reader = milldyn::defaultModelReader();
     std::string text(reinterpret_cast<const char*>(data), size);
-    // A line "#set path=value" at the end becomes a --set override.
-    std::vector<milldyn::Override> overrides;
-    const auto mark = text.rfind("\n#set ");
-    if (mark != std::string::npos) {
-        try {
-            overrides.push_back(milldyn::parseOverride(text.substr(mark + 6)));
-        } catch (const milldyn::SpecError&) {
-        }
+    const std::vector<milldyn::Override> overrides = milldyn::fuzz::overridesFromInput(text);
     }
     milldyn::ModelSpec spec;
     try {
