@@ -258,7 +258,10 @@ private:
     std::vector<Inclusion> m_inclusions;
     /// Every node of every included file, with the index of its inclusion:
     /// yaml-cpp marks know line and column but not the file.
-    std::vector<std::pair<YAML::Node, std::size_t>> m_origin;
+    /// Bucketed by the node's byte offset in its file, so a lookup compares
+    /// only the nodes at that offset (one per inclusion of that part), not
+    /// every node of every part (that made include expansion quadratic).
+    std::unordered_map<long long, std::vector<std::pair<YAML::Node, std::size_t>>> m_origin;
     /// Lists the includes assembled (a file's bodies: after its parts'),
     /// located where the file's own list (or its include:) was written.
     std::vector<std::pair<YAML::Node, SourceLocation>> m_placed;
@@ -276,12 +279,14 @@ private:
         for (const auto& p : m_placed)
             if (p.first.is(n)) return p.second;
         std::string file = m_file, chain;
-        for (const auto& o : m_origin)
-            if (o.first.is(n)) {
-                file = m_inclusions[o.second].file;
-                chain = m_inclusions[o.second].includedFrom;
-                break;
-            }
+        const auto bucket = m_origin.find(n.Mark().pos);
+        if (bucket != m_origin.end())
+            for (const auto& o : bucket->second)
+                if (o.first.is(n)) {
+                    file = m_inclusions[o.second].file;
+                    chain = m_inclusions[o.second].includedFrom;
+                    break;
+                }
         const YAML::Mark m = n.Mark();
         if (m.line < 0) return {file, 1, 1, chain};
         return {file, m.line + 1, m.column + 1, chain};
@@ -812,10 +817,15 @@ private:
         // Aliases repeat nodes, never nest without end, but a hostile file
         // could still nest very deep: yaml-cpp itself stops long before this.
         if (depth > 10000) return;
-        m_origin.emplace_back(n, inclusion);
+        // A node reached again through an alias is registered once: a part
+        // file of nested aliases is walked in linear time.
+        auto& bucket = m_origin[n.Mark().pos];
+        for (const auto& o : bucket)
+            if (o.first.is(n)) return;
+        bucket.emplace_back(n, inclusion);
         if (n.IsMap()) {
             for (auto it = n.begin(); it != n.end(); ++it) {
-                m_origin.emplace_back(it->first, inclusion);
+                m_origin[it->first.Mark().pos].emplace_back(it->first, inclusion);
                 registerNodes(it->second, inclusion, depth + 1);
             }
         } else if (n.IsSequence()) {

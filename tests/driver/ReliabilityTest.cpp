@@ -268,6 +268,25 @@ TEST(ModelFileReading, AliasBombWithASetIsCheckedInLinearTime) {
     EXPECT_TRUE(contains(e.what(), "unknown key 'x0'")) << e.formatted();
 }
 
+// The same bomb in an included part: every node of a part is registered
+// for its location, once per node now, not once per path to it.
+TEST(ModelFileReading, AliasBombInAPartFileIsRegisteredInLinearTime) {
+    const std::string dir = freshDir("bomb-part");
+    fs::create_directories(dir);
+    std::string part = "format_version: 1\nx0: &a0 [1, 2]\n";
+    for (int i = 1; i < 30; ++i)
+        part += "x" + std::to_string(i) + ": &a" + std::to_string(i) + " [*a" + std::to_string(i - 1) + ", *a" +
+                std::to_string(i - 1) + ", *a" + std::to_string(i - 1) + "]\n";
+    std::ofstream(dir + "/part.yaml") << part;
+    std::ofstream(dir + "/top.yaml") << "format_version: 1\nname: x\ninclude: part.yaml\nscenario: {analysis: linearize}\n";
+    try {
+        readModelFile(dir + "/top.yaml", defaultModelReader());
+        ADD_FAILURE() << "accepted a part with unknown keys";
+    } catch (const SpecError& e) {
+        EXPECT_TRUE(contains(e.what(), "unknown key 'x0'")) << e.formatted();
+    }
+}
+
 // Item 3: half_angle 1e-7 rad and fill 1e-300 gave "internal error"
 // (a negative central inertia from cancellation) when the scene was built.
 TEST(TinyChargeSegments, BuildAtTinyHalfAnglesAndFills) {
