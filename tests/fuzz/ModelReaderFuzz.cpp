@@ -15,7 +15,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static const milldyn::ModelFileReader reader = milldyn::defaultModelReader();
     std::string text(reinterpret_cast<const char*>(data), size);
     const std::vector<milldyn::Override> overrides = milldyn::fuzz::overridesFromInput(text);
-    }
     try {
         milldyn::readModelText(text, "fuzz.yaml", reader, overrides);
     } catch (const milldyn::SpecError& e) {

@@ -19,7 +19,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static const milldyn::ModelFileReader reader = milldyn::defaultModelReader();
     std::string text(reinterpret_cast<const char*>(data), size);
     const std::vector<milldyn::Override> overrides = milldyn::fuzz::overridesFromInput(text);
-    }
     milldyn::ModelSpec spec;
     try {
         spec = milldyn::readModelText(text, "fuzz.yaml", reader, overrides);
