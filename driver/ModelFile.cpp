@@ -2,6 +2,7 @@
 
 #include "driver/Units.h"
 
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <fcntl.h>
@@ -145,20 +146,43 @@ void checkModelText(const std::string& text, const std::string& file, const std:
 
 namespace {
 
+/// Records where the events of one document start (yaml-cpp's parser
+/// reports them to a handler; only the document start is of interest).
+struct DocumentStartHandler : YAML::EventHandler {
+    bool started = false;
+    YAML::Mark mark;
+    void OnDocumentStart(const YAML::Mark& m) override {
+        started = true;
+        mark = m;
+    }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnMapEnd() override {}
+};
+
 /// Parses the single YAML document of `text`; a second document is refused.
+/// (Not YAML::LoadAll: on some malformed input it never returns, adding
+/// empty documents until memory runs out; fuzz finding of scene_build_fuzz.)
 YAML::Node loadOneDocument(const std::string& text, const std::string& file, const std::string& includedFrom) {
-    std::vector<YAML::Node> docs;
     try {
-        docs = YAML::LoadAll(text);
+        YAML::Node root = YAML::Load(text);
+        std::istringstream in(text);
+        YAML::Parser parser(in);
+        DocumentStartHandler first, second;
+        if (parser.HandleNextDocument(first) && parser.HandleNextDocument(second) && second.started) {
+            const YAML::Mark& m = second.mark;
+            throw SpecError({file, m.line >= 0 ? m.line + 1 : 1, m.column >= 0 ? m.column + 1 : 1, includedFrom},
+                            "<document>", "a second YAML document (after '---'): a model file holds one");
+        }
+        return root;
     } catch (const YAML::ParserException& e) {
         throw SpecError({file, e.mark.line + 1, e.mark.column + 1, includedFrom}, "", "malformed YAML: " + e.msg);
     }
-    if (docs.size() > 1) {
-        const YAML::Mark m = docs[1].Mark();
-        throw SpecError({file, m.line >= 0 ? m.line + 1 : 1, m.column >= 0 ? m.column + 1 : 1, includedFrom}, "<document>",
-                        "a second YAML document (after '---'): a model file holds one");
-    }
-    return docs.empty() ? YAML::Node() : docs[0];
 }
 
 /// Reads one YAML document into a ModelSpec, remembering which nodes came

@@ -287,6 +287,19 @@ TEST(ModelFileReading, AliasBombInAPartFileIsRegisteredInLinearTime) {
     }
 }
 
+// scene_build_fuzz finding: on this malformed text YAML::LoadAll (used to
+// detect a second document) never returned, adding empty documents until
+// memory ran out. It must end in a SpecError.
+TEST(ModelFileReading, FuzzFindingLoadAllHangIsASpecError) {
+    const std::string file = std::string(MILLDYN_SOURCE_DIR) + "/tests/fuzz/findings/loadall_never_returns.yaml";
+    try {
+        readModelFile(file, defaultModelReader());
+        ADD_FAILURE() << "accepted " << file;
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.where().file, file) << e.formatted();
+    }
+}
+
 // Item 3: half_angle 1e-7 rad and fill 1e-300 gave "internal error"
 // (a negative central inertia from cancellation) when the scene was built.
 TEST(TinyChargeSegments, BuildAtTinyHalfAnglesAndFills) {
