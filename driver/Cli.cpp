@@ -9,6 +9,7 @@
 #include "driver/SweepMpi.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
+#include "driver/outputs/OutputSet.h"
 #include "driver/outputs/Schematic.h"
 #include "driver/outputs/Writers.h"
 #include "plugins/scene/ElementRegistry.h"
@@ -276,7 +277,7 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     const std::string noGravity = gravityWarning(spec, defaultModelReader());
     if (!noGravity.empty()) err << "milldyn: warning: " << noGravity << "\n";
     for (const auto& n : spec.readNotes) err << "milldyn: note: " << n << "\n";
-    ensureDirectory(a.outDir);
+    OutputSet outputs(a.outDir);  // all new files or the old set untouched (docs/reliability.md)
     const bool showProgress = !a.quiet && ::isatty(STDERR_FILENO);
     auto lastReport = std::chrono::steady_clock::now();
     ProgressFn progress;
@@ -308,13 +309,14 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     if (showProgress) err << "\r" << std::string(40, ' ') << "\r";
 
     std::string warning;
-    auto files = writeRunFiles(a.outDir, spec, run, warning);
+    auto files = writeRunFiles(outputs.staging(), spec, run, warning);
     if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
     if (recorder) {
         std::string w;
-        for (const auto& f : writeSchematics(a.outDir, spec.name, recorder->frames(), angles, w)) files.push_back(f);
+        for (const auto& f : writeSchematics(outputs.staging(), spec.name, recorder->frames(), angles, w)) files.push_back(f);
         if (!w.empty()) err << "milldyn: warning: " << w << "\n";
     }
+    files = outputs.commit(files);
 
     // A start that stalled is a machine that does not do what was asked:
     // its outputs are written, the verdict says why, exit 3. An unfinished
@@ -460,6 +462,11 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
         out << "sweep of " << a.model << ": " << summary.total << " points (" << summary.run << " run, "
             << summary.resumed << " resumed), " << summary.failed << " not ok, " << options.jobs << " jobs, "
             << std::setprecision(3) << wall << " s wall\n  wrote " << summary.files.front() << "\n";
+    if (summary.total > 0 && summary.failed == summary.total) {
+        err << "milldyn: sweep failed: every one of its " << summary.total << " points failed (see the diagnostic column of "
+            << summary.files.front() << ")\n";
+        return 1;
+    }
     return 0;
 }
 

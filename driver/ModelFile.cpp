@@ -2,14 +2,23 @@
 
 #include "driver/Units.h"
 
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
+#include <unordered_map>
 #include <sstream>
 
 namespace milldyn {
@@ -54,19 +63,139 @@ std::string formatNumber(double v) {
     return s.str();
 }
 
+/// Model and part files larger than this are refused before reading.
+constexpr std::size_t kMaxModelFileBytes = 64u << 20;
+
+/// Reads a regular file whole. A FIFO, device (/dev/zero) or directory is
+/// refused without blocking: opened non-blocking and checked with fstat on
+/// the open descriptor. Returns false with the reason.
+bool readRegularFile(const std::string& path, std::string& text, std::string& why) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        why = errno == ENOENT ? "no such file" : std::strerror(errno);
+        return false;
+    }
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        why = S_ISDIR(st.st_mode) ? "it is a directory, not a file"
+                                  : "it is not a regular file (a FIFO or device would never end)";
+        return false;
+    }
+    if (static_cast<std::size_t>(st.st_size) > kMaxModelFileBytes) {
+        ::close(fd);
+        why = "it is larger than " + std::to_string(kMaxModelFileBytes >> 20) + " MiB";
+        return false;
+    }
+    text.clear();
+    char buf[65536];
+    for (;;) {
+        const ssize_t n = ::read(fd, buf, sizeof buf);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            why = std::string("read error: ") + std::strerror(errno);
+            ::close(fd);
+            return false;
+        }
+        if (n == 0) break;
+        text.append(buf, static_cast<std::size_t>(n));
+        if (text.size() > kMaxModelFileBytes) {  // grew while being read
+            ::close(fd);
+            why = "it is larger than " + std::to_string(kMaxModelFileBytes >> 20) + " MiB";
+            return false;
+        }
+    }
+    ::close(fd);
+    return true;
+}
+
+}  // namespace
+
+void checkModelText(const std::string& text, const std::string& file, const std::string& includedFrom) {
+    int line = 1, column = 1;
+    const auto* p = reinterpret_cast<const unsigned char*>(text.data());
+    const std::size_t n = text.size();
+    for (std::size_t i = 0; i < n;) {
+        const unsigned char c = p[i];
+        auto fail = [&](const std::string& reason) {
+            throw SpecError({file, line, column, includedFrom}, "<text>", reason);
+        };
+        if (c == 0) fail("NUL byte in the model text");
+        std::size_t len = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+        bool ok = len > 0 && i + len <= n;
+        for (std::size_t k = 1; ok && k < len; ++k) ok = (p[i + k] & 0xC0) == 0x80;
+        if (ok && len > 1) {  // no overlong forms, surrogates or code points above U+10FFFF
+            unsigned cp = c & (0xFF >> (len + 1));
+            for (std::size_t k = 1; k < len; ++k) cp = (cp << 6) | (p[i + k] & 0x3F);
+            ok = cp >= (len == 2 ? 0x80u : len == 3 ? 0x800u : 0x10000u) && cp <= 0x10FFFF && !(cp >= 0xD800 && cp <= 0xDFFF);
+        }
+        if (!ok) {
+            char hex[8];
+            std::snprintf(hex, sizeof hex, "0x%02X", c);
+            fail(std::string("byte ") + hex + " is not UTF-8 (model files are UTF-8 text)");
+        }
+        if (c == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+        i += len;
+    }
+}
+
+namespace {
+
+/// Records where the events of one document start (yaml-cpp's parser
+/// reports them to a handler; only the document start is of interest).
+struct DocumentStartHandler : YAML::EventHandler {
+    bool started = false;
+    YAML::Mark mark;
+    void OnDocumentStart(const YAML::Mark& m) override {
+        started = true;
+        mark = m;
+    }
+    void OnDocumentEnd() override {}
+    void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+    void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+    void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnSequenceEnd() override {}
+    void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+    void OnMapEnd() override {}
+};
+
+/// Parses the single YAML document of `text`; a second document is refused.
+/// (Not YAML::LoadAll: on some malformed input it never returns, adding
+/// empty documents until memory runs out; fuzz finding of scene_build_fuzz.)
+YAML::Node loadOneDocument(const std::string& text, const std::string& file, const std::string& includedFrom) {
+    try {
+        YAML::Node root = YAML::Load(text);
+        std::istringstream in(text);
+        YAML::Parser parser(in);
+        DocumentStartHandler first, second;
+        if (parser.HandleNextDocument(first) && parser.HandleNextDocument(second) && second.started) {
+            const YAML::Mark& m = second.mark;
+            throw SpecError({file, m.line >= 0 ? m.line + 1 : 1, m.column >= 0 ? m.column + 1 : 1, includedFrom},
+                            "<document>", "a second YAML document (after '---'): a model file holds one");
+        }
+        return root;
+    } catch (const YAML::ParserException& e) {
+        throw SpecError({file, e.mark.line + 1, e.mark.column + 1, includedFrom}, "", "malformed YAML: " + e.msg);
+    }
+}
+
 /// Reads one YAML document into a ModelSpec, remembering which nodes came
 /// from --set so their diagnostics point at the command line.
 class Reader {
 public:
-    Reader(std::string file, const ModelFileReader& lookups) : m_file(std::move(file)), m_lookups(lookups) {}
+    Reader(std::string file, const ModelFileReader& lookups, std::string* resolved = nullptr)
+        : m_file(std::move(file)), m_lookups(lookups), m_resolved(resolved) {}
 
     ModelSpec read(const std::string& text, const std::vector<Override>& overrides) {
-        YAML::Node root;
-        try {
-            root = YAML::Load(text);
-        } catch (const YAML::ParserException& e) {
-            throw SpecError({m_file, e.mark.line + 1, e.mark.column + 1}, "", "malformed YAML: " + e.msg);
-        }
+        checkModelText(text, m_file, "");
+        for (const auto& o : overrides) checkModelText(o.path + "=" + o.value, "<--set " + o.path + ">", "");
+        YAML::Node root = loadOneDocument(text, m_file, "");
         if (!root || root.IsNull()) throw SpecError({m_file, 1, 1}, "", "the model file is empty");
         requireMap(root, "<document>");
         std::vector<OpenFile> open{{canonicalPath(m_file), m_file}};
@@ -80,6 +209,7 @@ public:
         applyPreset(root, spec);
         for (const auto& o : overrides)
             if (!isPresetPath(o)) applyOverride(root, o);
+        if (m_resolved) *m_resolved = YAML::Dump(root);
 
         spec.file = m_file;
         checkKeys(root, "", {"format_version", "name", "description", "fidelity", "bodies", "elements",
@@ -108,12 +238,34 @@ public:
         if (root["integrator"]) readIntegrator(root["integrator"], spec.integrator);
         if (root["outputs"]) readOutputs(root["outputs"], spec.outputs);
         spec.readNotes = m_readNotes;
+        checkRunSize(spec);
         return spec;
     }
+
+    /// Work the run would do, refused up front with its estimate rather
+    /// than found out after hours or gigabytes (issue 16, item 9).
+    static void checkRunSize(const ModelSpec& spec) {
+        if (spec.scenario.type != "transient" || !spec.scenario.has("end_time")) return;
+        const double end = spec.scenario.number("end_time");
+        const double samples = end / spec.outputs.sampleInterval;
+        if (samples > kMaxSamples)
+            throw spec.scenario.error(
+                "end_time", "end_time " + formatNumber(end) + " s at outputs.sample_interval " +
+                                formatNumber(spec.outputs.sampleInterval) + " s would write " + formatNumber(samples) +
+                                " rows, more than " + formatNumber(kMaxSamples) + ": use a longer sample_interval");
+        if (spec.integrator.maxStep > 0 && end / spec.integrator.maxStep > kMaxSteps)
+            throw spec.scenario.error("end_time", "end_time " + formatNumber(end) + " s at integrator.max_step " +
+                                                      formatNumber(spec.integrator.maxStep) + " s needs at least " +
+                                                      formatNumber(end / spec.integrator.maxStep) + " steps, more than " +
+                                                      formatNumber(kMaxSteps) + ": use a longer max_step");
+    }
+    static constexpr double kMaxSamples = 1e7;  ///< rows of one run's table
+    static constexpr double kMaxSteps = 1e9;    ///< steps the max_step forces
 
 private:
     std::string m_file;
     const ModelFileReader& m_lookups;
+    std::string* m_resolved;  ///< if set: the document after includes, preset and --set
     std::vector<std::pair<YAML::Node, SourceLocation>> m_overridden;  // node, "<--set path>"
     mutable std::vector<std::string> m_readNotes;  // ModelSpec::readNotes
 
@@ -138,7 +290,10 @@ private:
     std::vector<Inclusion> m_inclusions;
     /// Every node of every included file, with the index of its inclusion:
     /// yaml-cpp marks know line and column but not the file.
-    std::vector<std::pair<YAML::Node, std::size_t>> m_origin;
+    /// Bucketed by the node's byte offset in its file, so a lookup compares
+    /// only the nodes at that offset (one per inclusion of that part), not
+    /// every node of every part (that made include expansion quadratic).
+    std::unordered_map<long long, std::vector<std::pair<YAML::Node, std::size_t>>> m_origin;
     /// Lists the includes assembled (a file's bodies: after its parts'),
     /// located where the file's own list (or its include:) was written.
     std::vector<std::pair<YAML::Node, SourceLocation>> m_placed;
@@ -156,12 +311,14 @@ private:
         for (const auto& p : m_placed)
             if (p.first.is(n)) return p.second;
         std::string file = m_file, chain;
-        for (const auto& o : m_origin)
-            if (o.first.is(n)) {
-                file = m_inclusions[o.second].file;
-                chain = m_inclusions[o.second].includedFrom;
-                break;
-            }
+        const auto bucket = m_origin.find(n.Mark().pos);
+        if (bucket != m_origin.end())
+            for (const auto& o : bucket->second)
+                if (o.first.is(n)) {
+                    file = m_inclusions[o.second].file;
+                    chain = m_inclusions[o.second].includedFrom;
+                    break;
+                }
         const YAML::Mark m = n.Mark();
         if (m.line < 0) return {file, 1, 1, chain};
         return {file, m.line + 1, m.column + 1, chain};
@@ -637,9 +794,10 @@ private:
         }
         if (n["accuracy"]) {
             integ.accuracy = readNumber(n["accuracy"], "integrator.accuracy", "1");
-            if (!(integ.accuracy > 0 && integ.accuracy <= 1))
+            // Simbody asserts 0 < accuracy < 1 (an abort, not an exception).
+            if (!(integ.accuracy > 0 && integ.accuracy < 1))
                 throw error(n["accuracy"], "integrator.accuracy",
-                            "must lie in (0, 1], got " + formatNumber(integ.accuracy));
+                            "must lie in (0, 1) (Simbody refuses 1 and above), got " + formatNumber(integ.accuracy));
         }
         if (n["max_step"]) {
             integ.maxStep = readNumber(n["max_step"], "integrator.max_step", "s");
@@ -705,10 +863,15 @@ private:
         // Aliases repeat nodes, never nest without end, but a hostile file
         // could still nest very deep: yaml-cpp itself stops long before this.
         if (depth > 10000) return;
-        m_origin.emplace_back(n, inclusion);
+        // A node reached again through an alias is registered once: a part
+        // file of nested aliases is walked in linear time.
+        auto& bucket = m_origin[n.Mark().pos];
+        for (const auto& o : bucket)
+            if (o.first.is(n)) return;
+        bucket.emplace_back(n, inclusion);
         if (n.IsMap()) {
             for (auto it = n.begin(); it != n.end(); ++it) {
-                m_origin.emplace_back(it->first, inclusion);
+                m_origin[it->first.Mark().pos].emplace_back(it->first, inclusion);
                 registerNodes(it->second, inclusion, depth + 1);
             }
         } else if (n.IsSequence()) {
@@ -795,28 +958,14 @@ private:
             }
         if (open.size() > 32) throw error(fileNode, "include", "includes nest deeper than 32 files");
 
-        std::error_code ec;
-        if (std::filesystem::is_directory(file, ec))
-            throw error(fileNode, "include", "'" + file + "' is a directory, not a part file");
-        if (std::filesystem::exists(file, ec) && !std::filesystem::is_regular_file(file, ec))
-            throw error(fileNode, "include", "'" + file + "' is not a regular file");  // a FIFO or device would hang
-        std::ifstream in(file, std::ios::binary);
-        if (!in)
-            throw error(fileNode, "include",
-                        "cannot open '" + file + "'" +
-                            (std::filesystem::exists(file, ec) ? " (permission denied?)" : ": no such file"));
-        std::ostringstream text;
-        text << in.rdbuf();
+        std::string text, why;
+        if (!readRegularFile(file, text, why)) throw error(fileNode, "include", "cannot open '" + file + "': " + why);
 
         const std::string chain = formatLocation(entryAt);
         m_inclusions.push_back({file, chain});
         const std::size_t inclusion = m_inclusions.size() - 1;
-        YAML::Node part;
-        try {
-            part = YAML::Load(text.str());
-        } catch (const YAML::ParserException& e) {
-            throw SpecError({file, e.mark.line + 1, e.mark.column + 1, chain}, "", "malformed YAML: " + e.msg);
-        }
+        checkModelText(text, file, chain);
+        YAML::Node part = loadOneDocument(text, file, chain);
         if (!part || part.IsNull()) throw SpecError({file, 1, 1, chain}, "", "the part file is empty");
         registerNodes(part, inclusion);
         requireMap(part, "<document>");
@@ -891,13 +1040,37 @@ private:
     }
 
     /// How many places of the document hold `target` (an anchored block
-    /// used through aliases is one node at several places).
-    static int occurrences(const YAML::Node& node, const YAML::Node& target) {
+    /// used through aliases is one node at several places), counted up to 2.
+    /// Each distinct node is visited once (the count of paths from it is
+    /// remembered), so a file of nested aliases (a "billion laughs") takes
+    /// time linear in its size, not in its expansion.
+    static int occurrences(const YAML::Node& root, const YAML::Node& target) {
+        NodeMemo memo;
+        return occurrencesFrom(root, target, memo);
+    }
+    /// Nodes by identity (Node::is), bucketed by their source position.
+    struct NodeMemo {
+        std::unordered_map<long long, std::vector<std::pair<YAML::Node, int>>> buckets;
+        static long long key(const YAML::Node& n) { return n.Mark().pos; }
+        const int* find(const YAML::Node& n) const {
+            const auto it = buckets.find(key(n));
+            if (it == buckets.end()) return nullptr;
+            for (const auto& e : it->second)
+                if (e.first.is(n)) return &e.second;
+            return nullptr;
+        }
+        void put(const YAML::Node& n, int v) { buckets[key(n)].emplace_back(n, v); }
+    };
+    static int occurrencesFrom(const YAML::Node& node, const YAML::Node& target, NodeMemo& memo) {
+        if (const int* known = memo.find(node)) return *known;
         int count = node.is(target) ? 1 : 0;
         if (node.IsMap())
-            for (auto it = node.begin(); it != node.end(); ++it) count += occurrences(it->second, target);
+            for (auto it = node.begin(); it != node.end() && count < 2; ++it)
+                count += occurrencesFrom(it->second, target, memo);
         else if (node.IsSequence())
-            for (const auto& child : node) count += occurrences(child, target);
+            for (auto it = node.begin(); it != node.end() && count < 2; ++it) count += occurrencesFrom(*it, target, memo);
+        count = std::min(count, 2);
+        memo.put(node, count);
         return count;
     }
 
@@ -1062,19 +1235,10 @@ ModelSpec readModelText(const std::string& text, const std::string& displayName,
 }
 
 ModelSpec readModelFile(const std::string& path, const ModelFileReader& reader,
-                        const std::vector<Override>& overrides) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec))
-        throw SpecError({path, 1, 1}, "<file>", "is a directory, not a model file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw SpecError({path, 1, 1}, "<file>",
-                        std::filesystem::exists(path, ec) ? "cannot open the model file (permission denied?)"
-                                                          : "cannot open the model file: no such file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) throw SpecError({path, 1, 1}, "<file>", "cannot read the model file");
-    return readModelText(text.str(), path, reader, overrides);
+                        const std::vector<Override>& overrides, std::string* resolvedDocument) {
+    std::string text, why;
+    if (!readRegularFile(path, text, why)) throw SpecError({path, 1, 1}, "<file>", "cannot open the model file: " + why);
+    return Reader(path, reader, resolvedDocument).read(text, overrides);
 }
 
 }  // namespace milldyn

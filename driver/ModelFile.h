@@ -31,13 +31,22 @@ struct Override {
 /// A model without `gravity:` whose elements are loaded by weight (their
 /// schema's needsGravity): one warning naming them, else "".
 std::string gravityWarning(const ModelSpec& spec, const ModelFileReader& reader);
+/// Model text must be UTF-8 without NUL bytes (YAML 1.2; the JSON outputs
+/// need it too): throws SpecError at the line and column of the first
+/// offending byte of `text`, read from `file`.
+void checkModelText(const std::string& text, const std::string& file, const std::string& includedFrom = {});
 
 /// Parses "path=value"; throws SpecError located at the command line.
 Override parseOverride(const std::string& text);
 
-/// Reads and checks a model file. Throws SpecError on any bad input.
+/// Reads and checks a model file. Throws SpecError on any bad input. Only
+/// regular files are read (a FIFO or device is refused, never waited on);
+/// the text must be UTF-8 without NUL bytes and hold one YAML document.
+/// `resolvedDocument`, if given, receives the document as it stands after
+/// includes, the preset and the overrides (YAML): what determines a run,
+/// for the sweep's digest.
 ModelSpec readModelFile(const std::string& path, const ModelFileReader& reader,
-                        const std::vector<Override>& overrides = {});
+                        const std::vector<Override>& overrides = {}, std::string* resolvedDocument = nullptr);
 
 /// The same from text in memory (`displayName` appears in diagnostics).
 ModelSpec readModelText(const std::string& text, const std::string& displayName,

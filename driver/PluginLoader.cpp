@@ -4,14 +4,23 @@
 #include "plugins/scene/EngineTag.h"
 
 #include <dlfcn.h>
+#include <sys/stat.h>
 
 #include <stdexcept>
 
 namespace milldyn {
 
-void loadPlugin(const std::string& path) {
-    const SourceLocation where{"<--plugin " + path + ">", 1, 1};
+void loadPlugin(const std::string& given) {
+    const SourceLocation where{"<--plugin " + given + ">", 1, 1};
     auto fail = [&](const std::string& reason) { return SpecError(where, "--plugin", reason); };
+    // A name without a slash would make dlopen search the system's library
+    // path, never the working directory: it means a file here.
+    const std::string path = given.find('/') == std::string::npos ? "./" + given : given;
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0)
+        throw fail("cannot load: no such file " + path +
+                   (given.find('/') == std::string::npos ? " (a name without a slash is looked for in the working directory)" : ""));
+    if (!S_ISREG(st.st_mode)) throw fail("cannot load: " + path + " is not a regular file (a FIFO or device would block the load)");
     // RTLD_NOW: a missing symbol is an error here, not a crash mid-run. The
     // library stays loaded for the life of the process (its code builds
     // forces Simbody keeps).

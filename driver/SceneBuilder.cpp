@@ -1,5 +1,7 @@
 #include "driver/SceneBuilder.h"
 
+#include "driver/Simulation.h"
+
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/EnergyMeter.h"
 
@@ -75,6 +77,8 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
             type->build(e, *scene);
         } catch (const std::invalid_argument& err) {
             throw SpecError(e.where, e.name, err.what());
+        } catch (const SimTK::Exception::Base& err) {
+            throw SpecError(e.where, e.name, "Simbody refused it: " + simbodyMessage(err.what()));
         }
     }
     if (!columns.empty()) {

@@ -51,6 +51,26 @@ void copyDiscreteVariables(const SimTK::State& from, SimTK::State& to) {
 
 }  // namespace
 
+std::string simbodyMessage(const std::string& what) {
+    std::string text = what;
+    const std::string header = "SimTK Exception thrown at ";
+    if (text.compare(0, header.size(), header) == 0) {
+        const auto colonNewline = text.find(":\n");
+        text.erase(0, colonNewline == std::string::npos ? header.size() : colonNewline + 2);
+    }
+    std::string out;
+    for (char c : text) {
+        const bool space = c == '\n' || c == '\r' || c == '\t' || c == ' ';
+        if (space) {
+            if (!out.empty() && out.back() != ' ') out += ' ';
+        } else {
+            out += c;
+        }
+    }
+    while (!out.empty() && out.back() == ' ') out.pop_back();
+    return out.size() > 300 ? out.substr(0, 297) + "..." : out;
+}
+
 std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::System& system, const std::string& name) {
     using namespace SimTK;
     if (name == "RungeKuttaMerson") return std::make_unique<RungeKuttaMersonIntegrator>(system);
@@ -386,7 +406,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             status = integ.stepTo(own ? hardStop : std::min(nextSampleTime(), hardStop), hardStop);
         } catch (const std::exception& e) {
             throw AnalysisError("integrator " + m_settings.name + " failed near " + timeText(integ.getTime()) +
-                                ": " + std::string(e.what()).substr(0, 300));
+                                ": " + simbodyMessage(e.what()));
         }
         const SimTK::State& s = integ.getState();
         system.realize(s, own ? SimTK::Stage::Acceleration : SimTK::Stage::Velocity);

@@ -24,6 +24,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+/// A Simbody exception's text on one line: without its "SimTK Exception
+/// thrown at FILE:LINE:" header, whitespace runs folded, at most 300 chars.
+std::string simbodyMessage(const std::string& what);
+
 /// Creates a Simbody integrator by its model-file name (integratorNames()).
 std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::System& system, const std::string& name);
 

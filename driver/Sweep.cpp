@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -36,7 +37,12 @@ std::pair<double, std::string> splitValue(const std::string& option, const std::
     const char* begin = text.c_str();
     char* end = nullptr;
     const double v = std::strtod(begin, &end);
-    if (end == begin || !std::isfinite(v)) throw optionError(option, all, "'" + text + "' is not a number");
+    // Decimal numbers only, as the model reader takes them (strtod would
+    // also take hex and "infinity").
+    const bool decimal = end != begin && std::all_of(begin, static_cast<const char*>(end), [](char c) {
+        return std::isdigit(static_cast<unsigned char>(c)) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E';
+    });
+    if (!decimal || !std::isfinite(v)) throw optionError(option, all, "'" + text + "' is not a number");
     std::string unit(end);
     unit.erase(0, unit.find_first_not_of(' '));
     unit.erase(unit.find_last_not_of(' ') + 1);
@@ -45,6 +51,7 @@ std::pair<double, std::string> splitValue(const std::string& option, const std::
 
 /// Splits "path=rest" and rest on ':'.
 std::pair<std::string, std::vector<std::string>> splitSpec(const std::string& option, const std::string& text) {
+    checkModelText(text, "<" + option + ">");  // the path lands in JSON point files
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0) throw optionError(option, text, "expected path=a:b" + std::string(option == "--grid" ? ":n" : ""));
     std::vector<std::string> parts;
@@ -69,6 +76,24 @@ std::string pointFile(const std::string& dir, std::size_t index) {
     return dir + "/points/" + name;
 }
 
+/// JSON text safe for any bytes: invalid UTF-8 (a file name, a --grid
+/// path) is written as U+FFFD instead of throwing from the writer.
+std::string jsonText(const Json& j) { return j.dump(1, ' ', false, Json::error_handler_t::replace) + "\n"; }
+
+std::string manifestFile(const std::string& dir) { return dir + "/sweep-plan.json"; }
+
+/// 64-bit FNV-1a, as 16 hex digits: tells sweeps apart, not a signature.
+std::string digestOf(const std::string& text) {
+    std::uint64_t h = 1469598103934665603ull;
+    for (unsigned char c : text) {
+        h ^= c;
+        h *= 1099511628211ull;
+    }
+    char buf[20];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+    return buf;
+}
+
 Json axesJson(const SweepPlan& plan, std::size_t point) {
     Json inputs = Json::array();
     for (std::size_t a = 0; a < plan.axes.size(); ++a)
@@ -78,10 +103,11 @@ Json axesJson(const SweepPlan& plan, std::size_t point) {
     return inputs;
 }
 
-Json runPoint(const SweepPlan& plan, const SweepOptions& options, std::size_t point) {
+Json runPoint(const SweepPlan& plan, const SweepOptions& options, const Json& sweepTag, std::size_t point) {
     Json j;
     j["index"] = point;
     j["inputs"] = axesJson(plan, point);
+    j["sweep"] = sweepTag;
     std::vector<Override> overrides = options.baseOverrides;
     const auto mine = plan.overrides(point);
     overrides.insert(overrides.end(), mine.begin(), mine.end());
@@ -106,6 +132,10 @@ Json runPoint(const SweepPlan& plan, const SweepOptions& options, std::size_t po
     } catch (const AnalysisError& e) {
         j["status"] = "failed";
         j["diagnostic"] = e.what();
+        j["results"] = Json::object();
+    } catch (const std::exception& e) {  // one point's surprise is that point's failure, not the sweep's
+        j["status"] = "failed";
+        j["diagnostic"] = std::string("internal error: ") + e.what();
         j["results"] = Json::object();
     }
     return j;
@@ -167,6 +197,78 @@ SweepSummary writeTable(const std::string& outDir, std::vector<Json> points, Swe
     return summary;
 }
 
+/// What a sweep is: the digest of everything that determines its points
+/// (the model document after includes, preset and --set; the --set list
+/// itself, analysis, integrator and scenario included; the plan's kind,
+/// axes and values) and the manifest DIR/sweep-plan.json that records it.
+Json sweepManifest(const SweepPlan& plan, const SweepOptions& options) {
+    std::string resolved;
+    readModelFile(options.model, defaultModelReader(), options.baseOverrides, &resolved);
+    Json overrides = Json::array();
+    for (const auto& o : options.baseOverrides) overrides.push_back(o.path + "=" + o.value);
+    Json axes = Json::array();
+    for (const auto& a : plan.axes) {
+        std::string values;
+        for (double v : a.values) values += formatDouble(v) + "\n";
+        axes.push_back({{"path", a.path},
+                        {"unit", a.unit},
+                        {"count", a.values.size()},
+                        {"first", a.values.empty() ? 0.0 : a.values.front()},
+                        {"last", a.values.empty() ? 0.0 : a.values.back()},
+                        {"values_digest", digestOf(values)}});
+    }
+    Json m;
+    m["kind"] = plan.cartesian ? "grid" : "lhs";
+    m["count"] = plan.count;
+    m["axes"] = axes;
+    m["overrides"] = overrides;
+    m["model_digest"] = digestOf(resolved);
+    m["digest"] = digestOf(jsonText(m));  // all of the above; not the model's path
+    m["model"] = options.model;           // for the reason when a directory is refused
+    return m;
+}
+
+/// The tag every point file carries: which sweep, and how many points it has.
+Json sweepTag(const Json& manifest) { return {{"digest", manifest["digest"]}, {"count", manifest["count"]}}; }
+
+/// Why the sweep recorded in `theirs` is not the one of `mine`.
+std::string differences(const Json& theirs, const Json& mine) {
+    std::vector<std::string> what;
+    if (theirs.value("model", "") != mine.value("model", "")) what.push_back("model " + theirs.value("model", std::string("?")));
+    if (theirs.value("model_digest", "") != mine.value("model_digest", ""))
+        what.push_back("other model content (the file, a part it includes, its preset or analysis)");
+    if (theirs.value("overrides", Json()) != mine["overrides"]) what.push_back("other --set/--integrator/--accuracy/--scenario/--preset");
+    if (theirs.value("kind", "") != mine["kind"] || theirs.value("count", Json()) != mine["count"] ||
+        theirs.value("axes", Json()) != mine["axes"])
+        what.push_back("another plan (" + theirs.value("kind", std::string("?")) + " of " +
+                       (theirs.contains("count") ? theirs["count"].dump() : std::string("?")) + " points)");
+    std::string out;
+    for (const auto& w : what) out += (out.empty() ? "" : "; ") + w;
+    return out.empty() ? "another digest" : out;
+}
+
+/// Makes DIR the directory of this sweep: creates its manifest, or checks
+/// that the one there is this sweep's. Another sweep's directory is refused
+/// (two sweeps into one directory would mix their points).
+void claimDirectory(const std::string& dir, const Json& manifest) {
+    const std::string path = manifestFile(dir);
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        std::error_code ec;
+        if (std::filesystem::exists(path, ec)) {
+            const Json theirs = readPoint(path);
+            if (theirs.is_object() && theirs.value("digest", "") == manifest["digest"]) return;
+            if (!theirs.is_object())
+                throw SpecError({path, 1, 1}, "--out",
+                                "not a sweep plan (damaged?): delete it or choose another --out");
+            throw SpecError({path, 1, 1}, "--out",
+                            dir + " holds another sweep (" + differences(theirs, manifest) +
+                                "): choose another --out, or delete " + dir + " to start over");
+        }
+        if (createFileExclusively(path, jsonText(manifest))) return;
+    }
+    throw OutputError("cannot claim " + dir + " for the sweep: " + path + " keeps changing");
+}
+
 }  // namespace
 
 std::size_t SweepPlan::valueIndex(std::size_t point, std::size_t axis) const {
@@ -217,6 +319,18 @@ SweepPlan makeGrid(std::vector<SweepAxis> axes) {
     SweepPlan plan;
     plan.cartesian = true;
     plan.count = axes.empty() ? 0 : 1;
+    // Refused up front: the product of a few long axes is beyond any run
+    // (three axes of 100,000 values: 1e15 points).
+    double points = 1;
+    std::string sizes;
+    for (const auto& a : axes) {
+        points *= double(a.values.size());
+        sizes += (sizes.empty() ? "" : " x ") + std::to_string(a.values.size());
+    }
+    if (!axes.empty() && points > double(kMaxSweepPoints))
+        throw optionError("--grid", sizes, "the grid has " + formatSignificant(points) + " points (" + sizes +
+                                               "), more than the " + std::to_string(kMaxSweepPoints) +
+                                               " a sweep may have: use fewer values or --lhs");
     for (const auto& a : axes) plan.count *= a.values.size();
     plan.axes = std::move(axes);
     return plan;
@@ -244,8 +358,11 @@ SweepPlan makeLatinHypercube(std::vector<SweepAxis> ranges, std::size_t n, unsig
 
 SweepPart runSweepPart(const SweepPlan& plan, const SweepOptions& options,
                        const std::function<void(std::size_t, std::size_t, std::size_t)>& progress) {
-    ensureDirectory(options.outDir + "/points");
     ElementRegistry::instance();  // built once, before the workers read it
+    const Json manifest = sweepManifest(plan, options);
+    const Json tag = sweepTag(manifest);
+    ensureDirectory(options.outDir + "/points");
+    claimDirectory(options.outDir, manifest);
 
     std::vector<std::size_t> mine;
     for (std::size_t i = 0; i < plan.count; ++i)
@@ -256,8 +373,11 @@ SweepPart runSweepPart(const SweepPlan& plan, const SweepOptions& options,
     std::vector<std::size_t> todo;
     for (std::size_t k = 0; k < mine.size(); ++k) {
         Json cached = readPoint(pointFile(options.outDir, mine[k]));
-        if (!cached.is_null() && cached.contains("inputs") && cached["inputs"] == axesJson(plan, mine[k]) &&
-            cached.contains("status") && cached.contains("results") && cached.contains("diagnostic")) {
+        // A point is reused only if it belongs to this very sweep: same
+        // digest (model content, --set, analysis, integrator) and inputs.
+        if (cached.is_object() && cached.value("sweep", Json()) == tag && cached.contains("inputs") &&
+            cached["inputs"] == axesJson(plan, mine[k]) && cached.contains("status") && cached.contains("results") &&
+            cached.contains("diagnostic")) {
             points[k] = cached;
             ++summary.resumed;
         } else {
@@ -273,8 +393,8 @@ SweepPart runSweepPart(const SweepPlan& plan, const SweepOptions& options,
         for (std::size_t t; (t = next++) < todo.size();) {
             const std::size_t k = todo[t];
             try {
-                points[k] = runPoint(plan, options, mine[k]);
-                writeFileAtomically(pointFile(options.outDir, mine[k]), points[k].dump(1) + "\n");
+                points[k] = runPoint(plan, options, tag, mine[k]);
+                writeFileAtomically(pointFile(options.outDir, mine[k]), jsonText(points[k]));
             } catch (...) {
                 std::lock_guard<std::mutex> lock(progressMutex);
                 if (!fatal) fatal = std::current_exception();
@@ -296,7 +416,7 @@ SweepPart runSweepPart(const SweepPlan& plan, const SweepOptions& options,
     summary.run = todo.size();
     SweepPart part;
     part.summary = summary;
-    for (const auto& p : points) part.points.push_back(p.dump(1) + "\n");  // the point file's text
+    for (const auto& p : points) part.points.push_back(jsonText(p));  // the point file's text
     return part;
 }
 
@@ -324,28 +444,65 @@ SweepSummary writeSweepTable(const std::string& outDir, const std::vector<std::s
 }
 
 SweepSummary mergeSweeps(const std::vector<std::string>& dirs, const std::string& outDir) {
-    ensureDirectory(outDir + "/points");
     std::map<std::size_t, Json> byIndex;
+    Json tag, manifest;
+    std::string tagFrom;
     for (const auto& dir : dirs) {
         std::error_code ec;
         if (!std::filesystem::is_directory(dir + "/points", ec))
             throw SpecError({dir, 1, 1}, "<dir>", "not a sweep directory (no points/)");
+        const Json theirs = readPoint(manifestFile(dir));
+        if (theirs.is_object() && manifest.is_null()) manifest = theirs;
         for (const auto& entry : std::filesystem::directory_iterator(dir + "/points")) {
             if (entry.path().extension() != ".json") continue;
-            Json p = readPoint(entry.path().string());
-            if (p.is_null() || !p.contains("index"))
-                throw SpecError({entry.path().string(), 1, 1}, "<file>", "not a sweep point file");
+            const std::string file = entry.path().string();
+            Json p = readPoint(file);
+            if (!p.is_object() || !p.contains("index") || !p["index"].is_number_unsigned())
+                throw SpecError({file, 1, 1}, "<file>", "not a sweep point file");
+            // The plan travels with every point: parts of one sweep only.
+            const Json mine = p.value("sweep", Json());
+            if (!mine.is_object() || !mine.contains("digest") || !mine.contains("count") ||
+                !mine["count"].is_number_unsigned())
+                throw SpecError({file, 1, 1}, "sweep",
+                                "the point records no sweep plan (written by an older milldyn): rerun that part");
+            if (tag.is_null()) {
+                tag = mine;
+                tagFrom = file;
+            } else if (mine != tag) {
+                throw SpecError({file, 1, 1}, "sweep",
+                                "belongs to another sweep than " + tagFrom + " (digest " +
+                                    mine["digest"].get<std::string>() + ", not " + tag["digest"].get<std::string>() +
+                                    "): merge the parts of one sweep only");
+            }
             const std::size_t index = p["index"];
+            if (index >= tag["count"].get<std::size_t>())
+                throw SpecError({file, 1, 1}, "index", "point " + std::to_string(index) + " lies outside the sweep's " +
+                                                           tag["count"].dump() + " points");
             auto it = byIndex.find(index);
             if (it != byIndex.end() && it->second["inputs"] != p["inputs"])
-                throw SpecError({entry.path().string(), 1, 1}, "inputs",
+                throw SpecError({file, 1, 1}, "inputs",
                                 "point " + std::to_string(index) + " has different inputs in two parts");
             byIndex[index] = p;
         }
     }
+    if (tag.is_null()) throw SpecError({dirs.front(), 1, 1}, "<dir>", "no sweep points to merge");
+    // All points or nothing: a short table would read as a complete one.
+    const std::size_t count = tag["count"];
+    if (byIndex.size() != count) {
+        std::string missing;
+        std::size_t shown = 0;
+        for (std::size_t i = 0; i < count && shown < 10; ++i)
+            if (!byIndex.count(i)) missing += (shown++ ? ", " : "") + std::to_string(i);
+        if (count - byIndex.size() > shown) missing += ", ...";
+        throw SpecError({dirs.front(), 1, 1}, "points",
+                        std::to_string(count - byIndex.size()) + " of the sweep's " + std::to_string(count) +
+                            " points are missing (" + missing + "): a shard not run or not finished; nothing merged");
+    }
+    ensureDirectory(outDir + "/points");
+    if (manifest.is_object() && manifest.value("digest", "") == tag["digest"]) claimDirectory(outDir, manifest);
     std::vector<Json> points;
     for (auto& kv : byIndex) {
-        writeFileAtomically(pointFile(outDir, kv.first), kv.second.dump(1) + "\n");
+        writeFileAtomically(pointFile(outDir, kv.first), jsonText(kv.second));
         points.push_back(kv.second);
     }
     SweepSummary summary;

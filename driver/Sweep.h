@@ -26,6 +26,9 @@ struct SweepAxis {
     std::vector<double> values;  ///< in `unit`
 };
 
+/// The most points one sweep may have (grid or --lhs).
+constexpr std::size_t kMaxSweepPoints = 1000000;
+
 struct SweepPlan {
     std::vector<SweepAxis> axes;
     /// Number of points; point i takes axes[a].values[pointValue(i, a)].

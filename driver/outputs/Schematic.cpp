@@ -2,6 +2,7 @@
 
 #include "driver/Units.h"
 #include "driver/outputs/AtomicFile.h"
+#include "driver/outputs/OutputSet.h"
 #include "driver/outputs/Writers.h"
 
 #include <algorithm>
@@ -291,12 +292,6 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
 
 namespace {
 
-std::string quoteForShell(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
 bool rsvgAvailable() { return std::system("command -v rsvg-convert >/dev/null 2>&1") == 0; }
 
 }  // namespace
@@ -323,10 +318,8 @@ std::vector<std::string> writeSchematics(const std::string& dir, const std::stri
         written.push_back(base + ".svg");
         if (!png) continue;
         const std::string tmp = temporaryNameBeside(base + ".png");
-        const std::string cmd = "rsvg-convert -b white -o " + quoteForShell(tmp) + ' ' + quoteForShell(base + ".svg") +
-                                " 2>/dev/null";
-        if (std::system(cmd.c_str()) != 0) {
-            std::remove(tmp.c_str());
+        if (!runTool({"rsvg-convert", "-b", "white", "-o", tmp, base + ".svg"}) || !isCompletePng(tmp)) {
+            discardTemporary(tmp);
             warning = "rsvg-convert failed for " + base + ".svg: SVG only";
             continue;
         }

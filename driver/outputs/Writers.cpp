@@ -2,6 +2,7 @@
 
 #include "driver/outputs/AtomicFile.h"
 #include "plugins/scene/EngineTag.h"
+#include "driver/outputs/OutputSet.h"
 
 #include <nlohmann/json.hpp>
 
@@ -61,7 +62,7 @@ std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& resul
     for (const auto& t : result.extraTables) j["tables"].push_back(t.name + ".csv");
     j["run"] = {{"wall_time", info.wallSeconds}, {"wall_time_unit", "s"}, {"host", info.host},
                 {"milldyn_version", info.version}, {"engine", kSimbodyEngine}};
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";  // bytes that are not UTF-8: U+FFFD
 }
 
 std::string formatLinearModelJson(const AnalysisResult& result) {
@@ -69,7 +70,7 @@ std::string formatLinearModelJson(const AnalysisResult& result) {
     j["dofs"] = result.dofNames;
     j["equation"] = "M*q'' + C*q' + K*q = f, deviations from the operating point; A = [[0, I], [-M^-1 K, -M^-1 C]]";
     for (const auto& m : result.matrices) j[m.name] = {{"unit", m.unit}, {"rows", m.rows}};
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";  // bytes that are not UTF-8: U+FFFD
 }
 
 std::vector<std::string> writeResultFiles(const std::string& dir, const ModelSpec& spec,
@@ -102,16 +103,6 @@ std::string quoteForGnuplot(const std::string& s) {
     return out + "'";
 }
 
-namespace {
-
-std::string quoteForShell(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-}  // namespace
-
 bool gnuplotAvailable() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
 
 bool renderGnuplotPng(const std::string& png, const std::string& commands, int width, int height) {
@@ -122,11 +113,12 @@ bool renderGnuplotPng(const std::string& png, const std::string& commands, int w
            << commands;
     const std::string scriptPath = temporaryNameBeside(png + ".gp");
     writeFileAtomically(scriptPath, script.str());
-    const std::string cmd = "gnuplot " + quoteForShell(scriptPath) + " 2>/dev/null";
-    const int rc = std::system(cmd.c_str());
-    std::remove(scriptPath.c_str());
-    if (rc != 0) {
-        std::remove(tmpPng.c_str());
+    // Not std::system (it ignores SIGINT); and gnuplot exits 0 on a full
+    // disk, so the PNG itself is checked.
+    const bool ok = runTool({"gnuplot", scriptPath}) && isCompletePng(tmpPng);
+    discardTemporary(scriptPath);
+    if (!ok) {
+        discardTemporary(tmpPng);
         return false;
     }
     commitFile(tmpPng, png);

@@ -1,5 +1,7 @@
 #include "plugins/charges/SegmentCharge.h"
 
+#include "plugins/charges/CircularSegment.h"
+
 #include <cstdio>
 
 #include "plugins/scene/ElementRegistry.h"
@@ -49,34 +51,26 @@ SegmentCharge::SegmentCharge(const SimbodyMatterSubsystem& matter, const Mobiliz
     }
 }
 
-double SegmentCharge::calcFillFraction(double g) { return (2 * g - std::sin(2 * g)) / (2 * M_PI); }
+// The segment's geometry: plugins/charges/CircularSegment (series near γ = 0).
+double SegmentCharge::calcFillFraction(double g) { return circular_segment::calcFillFraction(g); }
 
 double SegmentCharge::calcHalfAngleForFill(double fill) {
     if (!(fill > 0 && fill <= 1)) throw std::invalid_argument("SegmentCharge: fill must be in (0, 1]");
-    if (fill == 1) return M_PI;
-    // f(γ) = 2γ − sin 2γ − 2π fill rises monotonically on (0, π): bisection
-    // is slow but cannot miss, and runs once per build.
-    double lo = 0, hi = M_PI;
-    for (int i = 0; i < 200 && hi - lo > 1e-15; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (2 * mid - std::sin(2 * mid) < 2 * M_PI * fill ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
+    return circular_segment::calcHalfAngleForFill(fill);
 }
 
 double SegmentCharge::calcMass() const {
-    const double g = m_p.halfAngle, r = m_p.drumRadius;
-    return m_p.bulkDensity * m_p.length * r * r * (2 * g - std::sin(2 * g)) / 2;
+    const double r = m_p.drumRadius;
+    return m_p.bulkDensity * m_p.length * r * r * circular_segment::calcAreaFactor(m_p.halfAngle) / 2;
 }
 
 double SegmentCharge::calcCentroidDistance() const {
-    const double g = m_p.halfAngle, s = std::sin(g);
-    return 4 * m_p.drumRadius * s * s * s / (3 * (2 * g - std::sin(2 * g)));
+    return m_p.drumRadius * circular_segment::calcCentroidFactor(m_p.halfAngle);
 }
 
 double SegmentCharge::calcAxisInertia() const {
-    const double g = m_p.halfAngle, r = m_p.drumRadius;
-    return calcMass() * r * r * (12 * g - 4 * std::sin(2 * g) - std::sin(4 * g)) / (12 * (2 * g - std::sin(2 * g)));
+    const double r = m_p.drumRadius;
+    return calcMass() * r * r * circular_segment::calcAxisInertiaFactor(m_p.halfAngle);
 }
 
 double SegmentCharge::calcCriticalSpeed() const { return std::sqrt(m_p.gravity.norm() / m_p.drumRadius); }
@@ -327,7 +321,8 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     auto* impl = new SegmentCharge(scene.matter(), carrier, drum.mobod, p);
 
     const double m = impl->calcMass(), lc = impl->calcCentroidDistance();
-    const double centralPolar = impl->calcAxisInertia() - m * lc * lc;
+    // k_c m r², not J_axis − m l_c² (two nearly equal numbers for a thin charge)
+    const double centralPolar = m * p.drumRadius * p.drumRadius * circular_segment::calcCentralInertiaFactor(p.halfAngle);
     MobilizedBody drumBody = drum.mobod;  // handles: a copy is the body
     MobilizedBody chargeBody;
     // The frame a held or steady charge stands still in: ground on a fixed

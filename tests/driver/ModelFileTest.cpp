@@ -357,12 +357,12 @@ TEST(ModelFileErrors, NegativeStiffnessIsOutOfRange) {
 
 TEST(ModelFileErrors, AccuracyZeroIsOutOfRange) {
     const SpecError e = readError(replaced("accuracy: 1e-6", "accuracy: 0"));
-    expectError(e, 32, 13, "integrator.accuracy", "must lie in (0, 1], got 0");
+    expectError(e, 32, 13, "integrator.accuracy", "must lie in (0, 1) (Simbody refuses 1 and above), got 0");
 }
 
 TEST(ModelFileErrors, AccuracyAboveOneIsOutOfRange) {
     const SpecError e = readError(replaced("accuracy: 1e-6", "accuracy: 1.5"));
-    expectError(e, 32, 13, "integrator.accuracy", "must lie in (0, 1], got 1.5");
+    expectError(e, 32, 13, "integrator.accuracy", "must lie in (0, 1) (Simbody refuses 1 and above), got 1.5");
 }
 
 TEST(ModelFileErrors, UnknownBodyReferenceSuggestsTheNearestBody) {
@@ -515,7 +515,7 @@ TEST(ModelFileOverride, BadValueIsLocatedAtTheCommandLine) {
     EXPECT_EQ(e.formatted().rfind("<--set scenario.end_time>:1:", 0), 0u) << e.formatted();
 
     const SpecError range = readError(kBase, {{"integrator.accuracy", "2"}});
-    expectError(range, "<--set integrator.accuracy>", 1, 1, "integrator.accuracy", "must lie in (0, 1]");
+    expectError(range, "<--set integrator.accuracy>", 1, 1, "integrator.accuracy", "must lie in (0, 1)");
 }
 
 TEST(ModelFileOverride, UnknownKeyAddedByAnOverrideIsLocatedAtTheCommandLine) {

@@ -3,6 +3,7 @@
 // any other exception, a crash, a leak or a hang is a finding.
 
 #include "driver/ModelFile.h"
+#include "tests/fuzz/FuzzInput.h"
 #include "driver/analyses/Analysis.h"
 
 #include <cstdint>
@@ -13,16 +14,7 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const milldyn::ModelFileReader reader = milldyn::defaultModelReader();
     std::string text(reinterpret_cast<const char*>(data), size);
-    // A line "#set path=value" at the end becomes a --set override, so the
-    // override walker is fuzzed with the document it edits.
-    std::vector<milldyn::Override> overrides;
-    const auto mark = text.rfind("\n#set ");
-    if (mark != std::string::npos) {
-        try {
-            overrides.push_back(milldyn::parseOverride(text.substr(mark + 6)));
-        } catch (const milldyn::SpecError&) {
-        }
-    }
+    const std::vector<milldyn::Override> overrides = milldyn::fuzz::overridesFromInput(text);
     try {
         milldyn::readModelText(text, "fuzz.yaml", reader, overrides);
     } catch (const milldyn::SpecError& e) {
