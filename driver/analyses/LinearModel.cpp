@@ -4,25 +4,134 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace milldyn {
 
 void calcUndampedModes(LinearModel& lm) {
-    const int n = static_cast<int>(lm.M.rows());
+    const int r = static_cast<int>(lm.M.rows());
     // Undamped modes: K is symmetric for our elements up to the differencing
     // error; its symmetric part is what the generalized solver needs.
     const Eigen::MatrixXd Ksym = 0.5 * (lm.K + lm.K.transpose());
     Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> modes(Ksym, lm.M);
     lm.naturalFrequencies = modes.eigenvalues().cwiseMax(0.0).cwiseSqrt();
-    lm.modeShapes = modes.eigenvectors();
-    for (int c = 0; c < n; ++c) {
+    // Expanded to every mobility, u = N·v (N empty: the coordinates are the mobilities).
+    lm.modeShapes = lm.N.size() ? Eigen::MatrixXd(lm.N * modes.eigenvectors()) : modes.eigenvectors();
+    for (int c = 0; c < r; ++c) {
         Eigen::Index at = 0;
         lm.modeShapes.col(c).cwiseAbs().maxCoeff(&at);
         lm.modeShapes.col(c) /= lm.modeShapes(at, c);
     }
 }
 
-LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes) {
+namespace {
+
+/// "between a and b": the bodies a constraint ties, for messages.
+std::string constraintName(const Scene& scene, const SimTK::Constraint& c) {
+    std::vector<std::string> names;
+    auto add = [&](const SimTK::MobilizedBody& b) {
+        for (const SceneBody& sb : scene.bodies())
+            if (sb.mobod.getMobilizedBodyIndex() == b.getMobilizedBodyIndex() &&
+                std::find(names.begin(), names.end(), sb.name) == names.end())
+                names.push_back(sb.name);
+    };
+    for (SimTK::ConstrainedMobilizerIndex i(0); i < c.getNumConstrainedMobilizers(); ++i)
+        add(c.getMobilizedBodyFromConstrainedMobilizer(i));
+    for (SimTK::ConstrainedBodyIndex i(0); i < c.getNumConstrainedBodies(); ++i)
+        add(c.getMobilizedBodyFromConstrainedBody(i));
+    std::string out = "constraint " + std::to_string(int(c.getConstraintIndex())) + " (between";
+    for (std::size_t i = 0; i < names.size(); ++i) out += (i ? (i + 1 == names.size() ? " and " : ", ") : " ") + names[i];
+    return out + ")";
+}
+
+Eigen::MatrixXd constraintJacobian(const SimTK::SimbodyMatterSubsystem& matter, const SimTK::State& s) {
+    SimTK::Matrix Gsim;
+    matter.calcG(s, Gsim);
+    Eigen::MatrixXd G(Gsim.nrow(), Gsim.ncol());
+    for (int i = 0; i < Gsim.nrow(); ++i)
+        for (int j = 0; j < Gsim.ncol(); ++j) G(i, j) = Gsim(i, j);
+    return G;
+}
+
+/// The independent coordinates of holonomic constraints linear in q:
+/// G·u = 0 (G = ∂perr/∂q, constant) has the solutions u = N·v, v the
+/// velocities of the mobilities kept independent. The dependent ones are
+/// picked from the last mobility back (the first bodies of the file, the
+/// drive's, stay independent): a mobility is dependent when its column of
+/// G raises the rank of the dependent columns taken so far. Fills
+/// lm.N, lm.independent, lm.eliminated; throws for constraints it cannot
+/// reduce (nonholonomic, acceleration-only, or with G changing with q).
+void calcIndependentBasis(const Scene& scene, const SimTK::State& x0, LinearModel& lm) {
+    const auto& matter = scene.matter();
+    const int n = x0.getNU();
+    std::vector<std::string> rowOwner;  // the constraint each row of G belongs to
+    for (SimTK::ConstraintIndex c(0); c < matter.getNumConstraints(); ++c) {
+        const SimTK::Constraint& con = matter.getConstraint(c);
+        if (con.isDisabled(x0)) continue;
+        int mp = 0, mv = 0, ma = 0;
+        con.getNumConstraintEquationsInUse(x0, mp, mv, ma);
+        if (mv || ma)
+            throw AnalysisError("linearize: " + constraintName(scene, con) +
+                                " is nonholonomic or acceleration-only, which the linearization cannot reduce to "
+                                "independent coordinates");
+        for (int k = 0; k < mp; ++k) rowOwner.push_back(constraintName(scene, con));
+    }
+    const std::vector<std::string> names = mobilityNames(scene, x0);
+    if (rowOwner.empty()) {
+        for (int j = 0; j < n; ++j) lm.independent.push_back(j);
+        return;
+    }
+    const Eigen::MatrixXd G = constraintJacobian(matter, x0);
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qrG(G);
+    const int rank = static_cast<int>(qrG.rank());
+    std::vector<int> dependent;
+    Eigen::MatrixXd taken(G.rows(), 0);
+    for (int j = n - 1; j >= 0 && static_cast<int>(dependent.size()) < rank; --j) {
+        Eigen::MatrixXd trial(G.rows(), taken.cols() + 1);
+        trial << taken, G.col(j);
+        if (Eigen::ColPivHouseholderQR<Eigen::MatrixXd>(trial).rank() > taken.cols()) {
+            taken = trial;
+            dependent.push_back(j);
+        }
+    }
+    std::vector<bool> isDependent(n, false);
+    for (int j : dependent) isDependent[j] = true;
+    for (int j = 0; j < n; ++j) (isDependent[j] ? lm.eliminated : lm.independent).push_back(j);
+    const int r = static_cast<int>(lm.independent.size());
+    Eigen::MatrixXd Gi(G.rows(), r), Gd(G.rows(), dependent.size());
+    for (int k = 0; k < r; ++k) Gi.col(k) = G.col(lm.independent[k]);
+    for (std::size_t k = 0; k < dependent.size(); ++k) Gd.col(k) = G.col(dependent[k]);
+    // G_d·u_d + G_i·u_i = 0 → u_d = −G_d⁺·G_i·u_i (G_d has full column rank;
+    // rows of redundant constraints are consistent).
+    const Eigen::MatrixXd Ud = -Gd.colPivHouseholderQr().solve(Gi);
+    lm.N = Eigen::MatrixXd::Zero(n, r);
+    for (int k = 0; k < r; ++k) lm.N(lm.independent[k], k) = 1;
+    for (std::size_t k = 0; k < dependent.size(); ++k) lm.N.row(dependent[k]) = Ud.row(k);
+    const double scale = G.cwiseAbs().maxCoeff() * std::max(1.0, lm.N.cwiseAbs().maxCoeff());
+    if ((G * lm.N).cwiseAbs().maxCoeff() > 1e-9 * scale)
+        throw AnalysisError("linearize: the constraints' Jacobian has no consistent independent coordinates "
+                            "(redundant constraints that contradict each other)");
+    // Linear in q: G must not change when the state moves along the
+    // constrained motion (gear and belt ratio constraints: G is constant).
+    for (int k = 0; k < r; ++k) {
+        for (double step : {-1e-2, 1e-2}) {
+            SimTK::State s = x0;
+            for (int i = 0; i < n; ++i) s.updQ()[i] += step * lm.N(i, k);
+            scene.system().realize(s, SimTK::Stage::Velocity);
+            const Eigen::MatrixXd Gs = constraintJacobian(matter, s);
+            for (Eigen::Index row = 0; row < G.rows(); ++row)
+                if ((Gs.row(row) - G.row(row)).cwiseAbs().maxCoeff() > 1e-9 * scale)
+                    throw AnalysisError("linearize: " + rowOwner[row] + " is not linear in the angles (its Jacobian "
+                                        "changes as " + names[lm.independent[k]] +
+                                        " turns), which the linearization cannot reduce");
+        }
+    }
+}
+
+}  // namespace
+
+LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes,
+                           bool reduceConstraints) {
     const SimTK::System& system = scene.system();
     SimTK::State x0 = operatingPoint;
     scene.setExcitationsOn(x0, false);
@@ -30,77 +139,99 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     if (x0.getNQ() != n)
         throw AnalysisError("linearize: only joints whose q̇ = u (pins, gimbals, bushings) are supported, got nq = " +
                             std::to_string(x0.getNQ()) + ", nu = " + std::to_string(n));
-    // Constraints (a rigid GearPair, GearMesh, a rigid BeltDrive) tie the
-    // coordinates: M, C and K would have to be reduced to the independent
-    // ones, which this linearization does not do; refuse rather than give
-    // the unconstrained system's modes.
+    system.realize(x0, SimTK::Stage::Velocity);  // calcG needs the velocity-stage bias
+    LinearModel lm;
     const auto& matter = scene.matter();
-    for (SimTK::ConstraintIndex c(0); c < matter.getNumConstraints(); ++c)
-        if (!matter.getConstraint(c).isDisabled(x0))
-            throw AnalysisError("linearize: the model has kinematic constraints (a rigid GearPair or BeltDrive, a "
-                                "GearMesh), which this linearization does not reduce; use GearPair law: compliant");
+    if (!reduceConstraints) {
+        // This caller works in every mobility (forces, probes, loads per
+        // body): constraints would need the reduced coordinates it does not
+        // handle; refuse rather than give the unconstrained system's answer.
+        for (SimTK::ConstraintIndex c(0); c < matter.getNumConstraints(); ++c)
+            if (!matter.getConstraint(c).isDisabled(x0))
+                throw AnalysisError("the model has kinematic constraints (a rigid GearPair or BeltDrive, a GearMesh: " +
+                                    constraintName(scene, matter.getConstraint(c)) +
+                                    "), which this analysis does not reduce (linearize does); use law: compliant");
+    }
+    calcIndependentBasis(scene, x0, lm);
+    const int r = static_cast<int>(lm.independent.size());
+    // Without constraints N = I: keep it implicit (lm.N empty).
+    const Eigen::MatrixXd N = lm.N.size() ? lm.N : Eigen::MatrixXd::Identity(n, n);
     const auto& probes = scene.probes();
     const int np = static_cast<int>(probes.size());
 
-    // Perturbs q or u entry j by h and returns (udot, probe values).
-    auto evaluate = [&](bool onQ, int j, double h, Eigen::VectorXd& udot, Eigen::VectorXd& out) {
+    double maxUDot = 0, minStep = 1;  // for the round-off floor of the frequencies
+    // Moves q or u by h along column k of N; returns (udot, probe values).
+    auto evaluate = [&](bool onQ, int k, double h, Eigen::VectorXd& udot, Eigen::VectorXd& out) {
         SimTK::State s = x0;
-        if (onQ) s.updQ()[j] += h;
-        else s.updU()[j] += h;
+        for (int i = 0; i < n; ++i) {
+            if (N(i, k) == 0) continue;
+            if (onQ) s.updQ()[i] += h * N(i, k);
+            else s.updU()[i] += h * N(i, k);
+        }
         system.realize(s, SimTK::Stage::Acceleration);
         udot.resize(n);
         for (int i = 0; i < n; ++i) udot[i] = s.getUDot()[i];
+        maxUDot = std::max(maxUDot, udot.cwiseAbs().maxCoeff());
         out.resize(np);
         for (int p = 0; p < np; ++p) out[p] = probes[p].value(s);
     };
 
-    LinearModel lm;
     SimTK::Matrix Msim;
-    system.realize(x0, SimTK::Stage::Position);
-    scene.matter().calcM(x0, Msim);
-    lm.M.resize(n, n);
+    matter.calcM(x0, Msim);
+    Eigen::MatrixXd Mfull(n, n);
     for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j) lm.M(i, j) = Msim(i, j);
+        for (int j = 0; j < n; ++j) Mfull(i, j) = Msim(i, j);
 
-    Eigen::MatrixXd dUdq(n, n), dUdu(n, n);
-    lm.outputQ.resize(np, n);
-    lm.outputU.resize(np, n);
-    for (int j = 0; j < n; ++j) {
+    // dU·(∂u̇/∂v): the accelerations of every mobility as v moves; along N
+    // the constraints stay satisfied, and u̇ stays in N's range.
+    Eigen::MatrixXd dUdq(n, r), dUdu(n, r);
+    lm.outputQ.resize(np, r);
+    lm.outputU.resize(np, r);
+    for (int k = 0; k < r; ++k) {
+        const int j = lm.independent[k];
         for (int which = 0; which < 2; ++which) {
             const bool onQ = which == 0;
             const double base = onQ ? x0.getQ()[j] : x0.getU()[j];
             // Central differences; the step scales with the value, and is
             // large enough that round-off in the accelerations stays small.
             const double h = 1e-5 * std::max(1.0, std::abs(base));
+            minStep = std::min(minStep, h);
             Eigen::VectorXd up, um, op, om;
-            evaluate(onQ, j, +h, up, op);
-            evaluate(onQ, j, -h, um, om);
-            (onQ ? dUdq : dUdu).col(j) = (up - um) / (2 * h);
-            (onQ ? lm.outputQ : lm.outputU).col(j) = (op - om) / (2 * h);
+            evaluate(onQ, k, +h, up, op);
+            evaluate(onQ, k, -h, um, om);
+            (onQ ? dUdq : dUdu).col(k) = (up - um) / (2 * h);
+            (onQ ? lm.outputQ : lm.outputU).col(k) = (op - om) / (2 * h);
         }
     }
-    lm.K = -lm.M * dUdq;
-    lm.C = -lm.M * dUdu;
+    // Nᵀ·(M·u̇ + Gᵀλ) = Nᵀ·f: the constraint forces drop out (G·N = 0).
+    lm.M = N.transpose() * Mfull * N;
+    lm.K = -N.transpose() * Mfull * dUdq;
+    lm.C = -N.transpose() * Mfull * dUdu;
+    // v̈ = (NᵀMN)⁻¹·NᵀM·ü; without constraints N = I and this is ∂u̇/∂q itself.
+    const Eigen::MatrixXd dVdq = lm.N.size() ? Eigen::MatrixXd(lm.M.ldlt().solve(-lm.K)) : dUdq;
+    const Eigen::MatrixXd dVdu = lm.N.size() ? Eigen::MatrixXd(lm.M.ldlt().solve(-lm.C)) : dUdu;
 
-    lm.A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-    lm.A.topRightCorner(n, n) = Eigen::MatrixXd::Identity(n, n);
-    lm.A.bottomLeftCorner(n, n) = dUdq;
-    lm.A.bottomRightCorner(n, n) = dUdu;
-    lm.dofNames = mobilityNames(scene, x0);
+    lm.frequencyFloor = std::sqrt(100 * std::numeric_limits<double>::epsilon() * maxUDot / minStep);
+    lm.A = Eigen::MatrixXd::Zero(2 * r, 2 * r);
+    lm.A.topRightCorner(r, r) = Eigen::MatrixXd::Identity(r, r);
+    lm.A.bottomLeftCorner(r, r) = dVdq;
+    lm.A.bottomRightCorner(r, r) = dVdu;
+    lm.bodyNames = mobilityNames(scene, x0);
+    for (int j : lm.independent) lm.dofNames.push_back(lm.bodyNames[j]);
     for (const auto& p : probes) {
         lm.outputNames.push_back(p.name);
         lm.outputUnits.push_back(p.unit);
     }
     if (!withModes) return lm;
     Eigen::EigenSolver<Eigen::MatrixXd> eig(lm.A);
-    std::vector<std::complex<double>> ev(eig.eigenvalues().data(), eig.eigenvalues().data() + 2 * n);
+    std::vector<std::complex<double>> ev(eig.eigenvalues().data(), eig.eigenvalues().data() + 2 * r);
     std::sort(ev.begin(), ev.end(), [](const auto& a, const auto& b) {
         if (std::abs(std::abs(a.imag()) - std::abs(b.imag())) > 1e-9 * (1 + std::abs(a)))
             return std::abs(a.imag()) < std::abs(b.imag());
         if (a.real() != b.real()) return a.real() > b.real();
         return a.imag() > b.imag();
     });
-    lm.eigenvalues = Eigen::Map<Eigen::VectorXcd>(ev.data(), 2 * n);
+    lm.eigenvalues = Eigen::Map<Eigen::VectorXcd>(ev.data(), 2 * r);
 
     calcUndampedModes(lm);
     return lm;

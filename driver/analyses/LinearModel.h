@@ -4,6 +4,20 @@
 // M from Simbody (calcM), C and K from central differences of the
 // accelerations: K = −M·∂q̈/∂q, C = −M·∂q̈/∂q̇. Joints with q̇ = u only (pin,
 // gimbal, bushing; not ball or free, whose q are quaternions).
+//
+// Kinematic constraints (a rigid GearPair or BeltDrive, a GearMesh) are
+// reduced to independent coordinates v (with reduceConstraints): the
+// constraint Jacobian G (Simbody's calcG, G·u = 0) gives a null-space basis
+// N with G·N = 0, u = N·v, whose v are the velocities of the mobilities
+// kept independent (the first in body order; the last ones a constraint
+// determines are eliminated). The state is moved along N's columns only, so
+// the constraints stay satisfied and u̇ stays in N's range; projecting
+// M·u̇ + Gᵀλ = f on N removes the constraint forces:
+//   M_r = Nᵀ·M·N,  K_r = −Nᵀ·M·∂u̇/∂v (q moved),  C_r = −Nᵀ·M·∂u̇/∂v (u moved).
+// Assumption: the constraints are holonomic and linear in q at the point
+// (G constant: gear and belt ratio constraints are r1·q1 ± r2·q2 = const),
+// checked by moving the state ±0.01 along every column of N; nonholonomic,
+// acceleration-only or non-linear constraints are refused, naming them.
 
 #include "plugins/scene/Scene.h"
 
@@ -20,8 +34,20 @@ struct LinearModel {
     Eigen::MatrixXd A;             ///< first-order state matrix [q; u]
     Eigen::VectorXcd eigenvalues;  ///< of A, sorted by |imag| then real [1/s]
     Eigen::VectorXd naturalFrequencies;  ///< undamped, from K v = ω² M v [rad/s]
-    Eigen::MatrixXd modeShapes;          ///< columns, max |entry| = 1
-    std::vector<std::string> dofNames;   ///< mobilityNames(): body names for pins
+    /// Columns, one per mode, rows every mobility (bodyNames; u = N·v when
+    /// constrained), max |entry| = 1.
+    Eigen::MatrixXd modeShapes;
+    std::vector<std::string> dofNames;   ///< the coordinates of M, C, K: independent mobilities' names
+    std::vector<std::string> bodyNames;  ///< mobilityNames(): every mobility, the rows of modeShapes
+    /// u = N·v (n × r) when constraints were reduced; empty without constraints (N = I).
+    Eigen::MatrixXd N;
+    std::vector<int> independent;  ///< mobilities kept as coordinates (indices into bodyNames)
+    std::vector<int> eliminated;   ///< mobilities the constraints determine
+    /// Natural frequencies up to this are the differencing's round-off, not
+    /// stiffness [rad/s]: sqrt(100·ε·max|u̇|/h) over the evaluations (a
+    /// 1-DOF train whose gravity stiffnesses cancel would otherwise report
+    /// 1e-5 rad/s as an elastic mode).
+    double frequencyFloor = 0;
     /// Output rows: probe p's deviation ≈ outputQ.row(p)·q + outputU.row(p)·q̇.
     Eigen::MatrixXd outputQ, outputU;
     std::vector<std::string> outputNames, outputUnits;
@@ -29,10 +55,12 @@ struct LinearModel {
 
 /// Linearizes `scene` about `operatingPoint` (the excitations it carries are
 /// switched off for the derivatives). Throws AnalysisError for joints whose
-/// q̇ differs from u.
+/// q̇ differs from u, and for enabled constraints unless `reduceConstraints`
+/// (then M, C, K, A and the output rows are in the independent coordinates).
 /// With `withModes` false only M, C, K, A and the output rows are filled
 /// (no eigenproblems: what a static solve needs, at O(n²) instead of O(n³)).
-LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes = true);
+LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes = true,
+                           bool reduceConstraints = false);
 
 /// Fills naturalFrequencies and modeShapes from K v = ω² M v (K's symmetric
 /// part); linearizeScene does this unless told not to.

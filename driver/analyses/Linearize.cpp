@@ -32,7 +32,7 @@ void addLinearModelOutputs(const LinearModel& lm, AnalysisResult& result) {
         const auto l = lm.eigenvalues[i];
         const double mag = std::abs(l);
         // The rigid rotation's eigenvalue is 0 up to differencing noise: no damping ratio.
-        const bool rigid = mag <= 1e-9 * scale;
+        const bool rigid = mag <= std::max(1e-9 * scale, lm.frequencyFloor);
         eig.rows.push_back({double(i + 1), l.real(), l.imag(), std::abs(l.imag()) / (2 * M_PI),
                             rigid ? 0.0 : -l.real() / mag});
     }
@@ -82,12 +82,20 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
     auto scene = buildScene(spec);
     SimTK::State state = initialState(*scene, spec);
     if (spec.scenario.text("operating_point") == "steady") state = solveSteadyState(*scene, state);
-    LinearModel lm = linearizeScene(*scene, state);
+    LinearModel lm = linearizeScene(*scene, state, true, true);
 
     AnalysisResult result;
     result.derived = derivedResults(*scene);
     result.analysis = "linearize";
-    const int n = static_cast<int>(lm.M.rows());
+    const int n = static_cast<int>(lm.M.rows());              // modes: the independent coordinates
+    const int nb = static_cast<int>(lm.modeShapes.rows());    // every mobility
+    if (!lm.eliminated.empty()) {
+        std::string kept, gone;
+        for (int j : lm.independent) kept += (kept.empty() ? "" : ", ") + lm.bodyNames[j];
+        for (int j : lm.eliminated) gone += (gone.empty() ? "" : ", ") + lm.bodyNames[j];
+        result.notes.push_back("kinematic constraints reduced: independent coordinates " + kept + "; " + gone +
+                               " follow from the constraints (u = N v); M, C, K, A are in the independent ones");
+    }
     // Mode shapes referred to a shaft the file names (amplitudes of geared
     // bodies times their speed ratio to it), each scaled to max |entry| = 1.
     const std::string reference = spec.scenario.text("reference_shaft");
@@ -95,7 +103,7 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
         std::vector<std::string> unreferred;
         const std::vector<double> f = referralFactors(*scene, state, *scene->findBody(reference), unreferred);
         for (int m = 0; m < n; ++m) {
-            for (int b = 0; b < n; ++b) lm.modeShapes(b, m) *= f[b];
+            for (int b = 0; b < nb; ++b) lm.modeShapes(b, m) *= f[b];
             Eigen::Index at = 0;
             lm.modeShapes.col(m).cwiseAbs().maxCoeff(&at);
             lm.modeShapes.col(m) /= lm.modeShapes(at, m);
@@ -107,29 +115,31 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
     } else {
         result.notes.push_back("mode shapes in each body's own angle (scenario.reference_shaft refers them to one shaft)");
     }
-    // The main table: one row per mode, one column per degree of freedom,
-    // named by its body.
+    // The main table: one row per mode, one column per mobility (every body,
+    // the eliminated ones too), named by its body.
     result.tableName = "mode_shapes";
     result.plotXLabel = "mode";
     result.columnNames = {"mode", "natural_frequency"};
     result.columnUnits = {"1", "Hz"};
-    for (const auto& name : lm.dofNames) {
+    for (const auto& name : lm.bodyNames) {
         result.columnNames.push_back(name);
         result.columnUnits.push_back("1");
     }
     for (int m = 0; m < n; ++m) {
         std::vector<double> row = {double(m + 1), lm.naturalFrequencies[m] / (2 * M_PI)};
-        for (int b = 0; b < n; ++b) row.push_back(lm.modeShapes(b, m));
+        for (int b = 0; b < nb; ++b) row.push_back(lm.modeShapes(b, m));
         result.rows.push_back(row);
     }
     addLinearModelOutputs(lm, result);
 
     // Rigid rotation of the whole train is a zero-frequency mode; report the
     // elastic ones.
-    const double scale = lm.naturalFrequencies.maxCoeff();
+    // (and the differencing's round-off: a train with no stiffness at all
+    // has only rigid modes).
+    const double rigidBelow = std::max(1e-6 * lm.naturalFrequencies.maxCoeff(), lm.frequencyFloor);
     int elastic = 0;
     for (int m = 0; m < n; ++m) {
-        if (lm.naturalFrequencies[m] <= 1e-6 * scale) continue;
+        if (lm.naturalFrequencies[m] <= rigidBelow) continue;
         ++elastic;
         // The body that moves most in this mode names it.
         Eigen::Index at = 0;
@@ -137,7 +147,7 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
         result.results.push_back({"natural_frequency_" + std::to_string(elastic), lm.naturalFrequencies[m], "rad/s",
                                   "undamped elastic mode " + std::to_string(elastic) + " (" +
                                       std::to_string(lm.naturalFrequencies[m] / (2 * M_PI)) + " Hz), largest at " +
-                                      lm.dofNames[at]});
+                                      lm.bodyNames[at]});
     }
     for (Eigen::Index i = 0; i < lm.eigenvalues.size(); ++i) {
         const auto l = lm.eigenvalues[i];
@@ -146,7 +156,10 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
         result.results.push_back({tag + "_real", l.real(), "1/s", "damped eigenvalue, real part"});
         if (l.imag() > 0) result.results.push_back({tag + "_imag", l.imag(), "rad/s", "damped eigenvalue, imaginary part"});
     }
-    result.results.push_back({"degrees_of_freedom", double(n), "1", "mobilities of the linearized system"});
+    if (elastic == 0)
+        result.notes.push_back("no elastic mode: every natural frequency is at most " +
+                               std::to_string(rigidBelow) + " rad/s, the differencing's round-off (rigid motion)");
+    result.results.push_back({"degrees_of_freedom", double(n), "1", "independent coordinates of the linearized system (mobilities less constraints)"});
     // The operating point: every body's speed, and the probes that describe
     // a loaded running point (charge lags, load torques).
     for (const auto& b : scene->bodies())
