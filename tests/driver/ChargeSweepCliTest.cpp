@@ -68,7 +68,9 @@ TEST_F(CliChargeSweep, FillSweepFollowsTheTorqueArm) {
         EXPECT_NEAR(torque[i], expected, 1e-9 * expected) << fill[i];
     }
     for (std::size_t i = 1; i < fill.size(); ++i) {
-        if (fill[i] <= 0.5 + 1e-12) EXPECT_GT(power[i], power[i - 1]) << fill[i];
+        if (fill[i] <= 0.5 + 1e-12) {
+            EXPECT_GT(power[i], power[i - 1]) << fill[i];
+        }
         else EXPECT_LT(power[i], power[i - 1]) << fill[i];
     }
 }
@@ -84,12 +86,14 @@ TEST_F(CliChargeSweep, LagSweepFollowsSinAlpha) {
         // The grid column keeps the unit of its bounds: elements.charge.lag[deg].
         const double expected = oracles::torqueArmTorque({1.5, 4.0, 4800.0, 0.30}, lag[i] * kPi / 180, 9.81);
         EXPECT_NEAR(torque[i], expected, 1e-9 * expected) << lag[i];
-        if (i > 0) EXPECT_GT(power[i], power[i - 1]);
+        if (i > 0) {
+            EXPECT_GT(power[i], power[i - 1]);
+        }
     }
 }
 
 TEST_F(CliChargeSweep, UnusedKeyIsExit2WithTheMode) {
-    const auto r = run("", "run " + kMill + " --set elements.charge.motion=dynamic_lag --set elements.charge.wall_drag=1e5 --out " +
+    const auto r = run("", "run " + kMill + " --set elements.charge.motion=dynamic_lag --set \"elements.charge.wall_drag=1e5 N*m*s/rad\" --out " +
                                (m_dir / "x").string());
     EXPECT_EQ(r.code, 2) << r.out << r.err;
     EXPECT_NE(r.err.find("tumbling_mill.yaml:"), std::string::npos) << r.err;

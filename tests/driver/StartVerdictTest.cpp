@@ -81,7 +81,7 @@ TEST(StartVerdict, SweepRecordsTheVerdictPerPointAndContinues) {
     const std::string dir = ::testing::TempDir() + "/stall_sweep";
     std::filesystem::remove_all(dir);
     std::ostringstream out, err;
-    runCli({"sweep", kModels + "start_bench_dol.yaml", "--grid", "elements.load.constant_torque=0:60:2", "--set",
+    runCli({"sweep", kModels + "start_bench_dol.yaml", "--grid", "elements.load.constant_torque=0 N*m:60 N*m:2", "--set",
             "scenario.end_time=3.5 s", "--jobs", "1", "--out", dir},
            out, err);
     std::ifstream table(dir + "/sweep.csv");
