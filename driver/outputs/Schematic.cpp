@@ -227,7 +227,9 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
     auto labelAt = [&](const std::string& text, double x, double y, double size, bool middle) {
         const LabelBox box = textBox(text, x, y, size, middle);
         if (collecting) {
-            wanted.push_back(box);
+            LabelBox inside = box;  // no label starts left of the picture
+            inside.x = std::max(inside.x, 2.0);
+            wanted.push_back(inside);
             return "x=\"" + num(x) + "\" y=\"" + num(y) + "\"";
         }
         const LabelBox& p = placed.at(nextLabel++);
