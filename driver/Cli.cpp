@@ -7,6 +7,7 @@
 #include "driver/SchemaReference.h"
 #include "driver/Sweep.h"
 #include "driver/SweepMpi.h"
+#include "driver/outputs/SweepPlots.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
 #include "driver/outputs/OutputSet.h"
@@ -66,6 +67,7 @@ struct Arguments {
     std::string reportDir;  ///< validate --report: where report.html/.md go
     bool json = false;
     bool quiet = false;
+    bool noPlots = false;  ///< sweep, merge: no sweep_*.png
     std::vector<std::string> positional;  ///< after the model (merge: directories)
     std::vector<std::string> plugins;     ///< --plugin libraries, loaded first
     std::vector<std::string> grids, ranges;
@@ -158,8 +160,10 @@ struct CommandLine {
         sweep->add_flag("--mpi", a.mpi, "one slice per MPI rank");
         sweep->add_option("--out", a.outDir, "output directory")->type_name("DIR");
         sweep->add_flag("--quiet", a.quiet, "print nothing on success");
+        sweep->add_flag("--no-plots", a.noPlots, "write no sweep_*.png (also outputs.plots: false in the model)");
         CLI::App* merge = command("merge", "join the parts of a sharded sweep");
         merge->add_option("dirs", a.positional, "sweep directories")->type_name("DIR...");
+        merge->add_flag("--no-plots", a.noPlots, "write no sweep_*.png");
         merge->add_option("--out", a.outDir, "output directory")->type_name("DIR");
         CLI::App* elements = command("elements", "every element type with its keys, units, defaults and ranges");
         elements->add_option("type", a.topic, "only this element type")->type_name("TYPE");
@@ -415,6 +419,15 @@ int commandInfo(const Arguments& a, std::ostream& out) {
     return 0;
 }
 
+/// The sweep's plots join its output files; what could not be drawn is a warning.
+void addSweepPlots(bool plots, SweepLayout layout, const std::string& dir, SweepSummary& summary, std::ostream& err) {
+    if (!plots) return;
+    std::string warning;
+    const auto files = writeSweepPlots(dir, layout, warning);
+    summary.files.insert(summary.files.end(), files.begin(), files.end());
+    if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
+}
+
 int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
     SweepPlan plan;
     try {
@@ -423,7 +436,7 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
         throw UsageError(e.what());
     }
     // The model must read before hundreds of points report the same error.
-    readModel(a.model, a.overrides);
+    const bool plots = readModel(a.model, a.overrides).outputs.plots && !a.noPlots;
 
     SweepOptions options;
     options.model = a.model;
@@ -457,11 +470,14 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
         summary = runSweep(plan, options, progress);
     }
     if (showProgress) err << "\r" << std::string(50, ' ') << "\r";
+    addSweepPlots(plots, !plan.cartesian ? SweepLayout::Sample : a.shardCount > 1 ? SweepLayout::Infer : SweepLayout::Grid, options.outDir, summary, err);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!a.quiet)
         out << "sweep of " << a.model << ": " << summary.total << " points (" << summary.run << " run, "
             << summary.resumed << " resumed), " << summary.failed << " not ok, " << options.jobs << " jobs, "
             << std::setprecision(3) << wall << " s wall\n  wrote " << summary.files.front() << "\n";
+    if (!a.quiet && summary.files.size() > 1)
+        out << "  wrote " << summary.files.size() - 1 << " plots (sweep_*.png)\n";
     if (summary.total > 0 && summary.failed == summary.total) {
         err << "milldyn: sweep failed: every one of its " << summary.total << " points failed (see the diagnostic column of "
             << summary.files.front() << ")\n";
@@ -470,10 +486,12 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
     return 0;
 }
 
-int commandMerge(const Arguments& a, std::ostream& out) {
-    const SweepSummary summary = mergeSweeps(a.positional, a.outDir);
+int commandMerge(const Arguments& a, std::ostream& out, std::ostream& err) {
+    SweepSummary summary = mergeSweeps(a.positional, a.outDir);
+    addSweepPlots(!a.noPlots, SweepLayout::Infer, a.outDir, summary, err);
     out << "merged " << a.positional.size() << " sweep directories: " << summary.total << " points, "
         << summary.failed << " not ok\n  wrote " << summary.files.front() << "\n";
+    if (summary.files.size() > 1) out << "  wrote " << summary.files.size() - 1 << " plots (sweep_*.png)\n";
     return 0;
 }
 
@@ -547,7 +565,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         if (a.command == "info") return commandInfo(a, out);
         if (a.command == "validate") return commandValidate(a, out, err);
         if (a.command == "sweep") return commandSweep(a, out, err);
-        if (a.command == "merge") return commandMerge(a, out);
+        if (a.command == "merge") return commandMerge(a, out, err);
         if (a.command == "elements") return commandElements(a, out);
         if (a.command == "analyses") return commandAnalyses(a, out);
         if (a.command == "schema") return commandSchema(out);

@@ -141,6 +141,46 @@ const Style& styleOf(const std::string& role) {
 
 }  // namespace
 
+bool labelBoxesOverlap(const LabelBox& a, const LabelBox& b) {
+    return a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+}
+
+std::vector<LabelBox> placeLabels(const std::vector<LabelBox>& boxes) {
+    std::vector<LabelBox> placed;
+    auto free = [&](const LabelBox& b) {
+        return std::none_of(placed.begin(), placed.end(), [&](const LabelBox& o) { return labelBoxesOverlap(b, o); });
+    };
+    for (const LabelBox& box : boxes) {
+        LabelBox chosen = box;
+        if (!free(box)) {
+            bool found = false;
+            for (int shift = 0; shift < 2 && !found; ++shift) {
+                const double dx = shift * box.width;
+                for (int k = 1; k <= 30 && !found; ++k)
+                    for (int sign : {1, -1}) {
+                        LabelBox c = box;
+                        c.x += dx;
+                        c.y += sign * k * (box.height + 2);
+                        if (free(c)) {
+                            chosen = c;
+                            found = true;
+                            break;
+                        }
+                    }
+            }
+        }
+        placed.push_back(chosen);
+    }
+    return placed;
+}
+
+LabelBox textBox(const std::string& text, double x, double y, double size, bool middle) {
+    std::size_t glyphs = 0;
+    for (unsigned char c : text) glyphs += (c & 0xC0) != 0x80;  // UTF-8 lead bytes
+    const double width = 0.62 * size * double(glyphs);
+    return {middle ? x - width / 2 : x, y - 0.8 * size, width, size};
+}
+
 double schematicForceScale(const std::vector<SchematicFrame>& frames, double& referenceForce) {
     double largest = 0;
     for (const auto& f : frames)
@@ -179,19 +219,38 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
         << escapeMarkup(title) << "</text>\n"
         << "<text x=\"" << num(kMargin / 2) << "\" y=\"46\" font-size=\"13\">" << escapeMarkup(caption) << "</text>\n";
 
+    // Labels: a first drawing collects where every label wants to go,
+    // placeLabels moves those that would overprint an earlier one, and the
+    // second drawing writes them where placed.
+    std::vector<LabelBox> wanted, placed;
+    bool collecting = true;
+    std::size_t nextLabel = 0;
+    auto labelAt = [&](const std::string& text, double x, double y, double size, bool middle) {
+        const LabelBox box = textBox(text, x, y, size, middle);
+        if (collecting) {
+            LabelBox inside = box;  // no label starts left of the picture
+            inside.x = std::max(inside.x, 2.0);
+            wanted.push_back(inside);
+            return "x=\"" + num(x) + "\" y=\"" + num(y) + "\"";
+        }
+        const LabelBox& p = placed.at(nextLabel++);
+        return "x=\"" + num(x + p.x - box.x) + "\" y=\"" + num(y + p.y - box.y) + "\"";
+    };
+    std::ostringstream body;
     // Fills first, lines over them, arrows on top.
-    auto pass = [&](Sketch::Kind kind) {
+    auto pass = [&](std::ostringstream& out, Sketch::Kind kind) {
         for (const auto& s : shapes) {
             if (s.kind != kind) continue;
             const Style& st = styleOf(s.role);
             const std::string cls = escapeMarkup(s.role);
             switch (s.kind) {
                 case Sketch::Kind::Circle:
-                    svg << "<circle class=\"" << cls << "\" cx=\"" << num(X(s.x)) << "\" cy=\"" << num(Y(s.y))
+                    out << "<circle class=\"" << cls << "\" cx=\"" << num(X(s.x)) << "\" cy=\"" << num(Y(s.y))
                         << "\" r=\"" << num(s.radius * pxPerM) << "\" " << st.attributes << "/>\n";
                     if (!s.label.empty())
-                        svg << "<text class=\"label\" x=\"" << num(X(s.x + 0.75 * s.radius)) << "\" y=\""
-                            << num(Y(s.y + 0.75 * s.radius) - 4) << "\" font-size=\"11\" fill=\"#333\">"
+                        out << "<text class=\"label\" "
+                            << labelAt(s.label, X(s.x + 0.75 * s.radius), Y(s.y + 0.75 * s.radius) - 4, 11, false)
+                            << " font-size=\"11\" fill=\"#333\">"
                             << escapeMarkup(s.label) << "</text>\n";
                     break;
                 case Sketch::Kind::Segment: {
@@ -201,49 +260,58 @@ std::string renderSchematicSvg(const SchematicFrame& frame, const std::string& t
                     const double x0 = X(s.x + s.radius * std::cos(a0)), y0 = Y(s.y + s.radius * std::sin(a0));
                     const double x1 = X(s.x + s.radius * std::cos(a1)), y1 = Y(s.y + s.radius * std::sin(a1));
                     const double rpx = s.radius * pxPerM;
-                    svg << "<path class=\"" << cls << "\" d=\"M" << num(x0) << ',' << num(y0) << " A" << num(rpx)
+                    out << "<path class=\"" << cls << "\" d=\"M" << num(x0) << ',' << num(y0) << " A" << num(rpx)
                         << ',' << num(rpx) << " 0 " << (s.halfAngle > M_PI / 2 ? 1 : 0) << " 0 " << num(x1) << ','
                         << num(y1) << " Z\" " << st.attributes << "/>\n";
                     if (!s.label.empty()) {
                         const double lx = s.x + 0.45 * s.radius * std::cos(s.direction);
                         const double ly = s.y + 0.45 * s.radius * std::sin(s.direction);
-                        svg << "<text class=\"label\" x=\"" << num(X(lx)) << "\" y=\"" << num(Y(ly))
-                            << "\" font-size=\"10\" text-anchor=\"middle\" fill=\"#402000\">" << escapeMarkup(s.label)
+                        out << "<text class=\"label\" " << labelAt(s.label, X(lx), Y(ly), 10, true)
+                            << " font-size=\"10\" text-anchor=\"middle\" fill=\"#402000\">" << escapeMarkup(s.label)
                             << "</text>\n";
                     }
                     break;
                 }
                 case Sketch::Kind::Line:
-                    svg << "<line class=\"" << cls << "\" x1=\"" << num(X(s.x)) << "\" y1=\"" << num(Y(s.y))
+                    out << "<line class=\"" << cls << "\" x1=\"" << num(X(s.x)) << "\" y1=\"" << num(Y(s.y))
                         << "\" x2=\"" << num(X(s.x2)) << "\" y2=\"" << num(Y(s.y2)) << "\" " << st.attributes
                         << "/>\n";
                     if (!s.label.empty())
-                        svg << "<text class=\"label\" x=\"" << num(X(0.5 * (s.x + s.x2)) + 4) << "\" y=\""
-                            << num(Y(0.5 * (s.y + s.y2)) - 4) << "\" font-size=\"11\" fill=\"#1f5fbf\">"
+                        out << "<text class=\"label\" "
+                            << labelAt(s.label, X(0.5 * (s.x + s.x2)) + 4, Y(0.5 * (s.y + s.y2)) - 4, 11, false)
+                            << " font-size=\"11\" fill=\"#1f5fbf\">"
                             << escapeMarkup(s.label) << "</text>\n";
                     break;
                 case Sketch::Kind::Arrow: {
                     const double f = std::hypot(s.x2, s.y2);
                     const double ex = s.x + s.x2 * metresPerNewton, ey = s.y + s.y2 * metresPerNewton;
-                    svg << "<g class=\"arrow " << cls << "\" data-force=\"" << f << "\" data-name=\""
+                    out << "<g class=\"arrow " << cls << "\" data-force=\"" << f << "\" data-name=\""
                         << escapeMarkup(s.label) << "\">"
                         << "<line class=\"arrow\" x1=\"" << X(s.x) << "\" y1=\"" << Y(s.y) << "\" x2=\"" << X(ex)
                         << "\" y2=\"" << Y(ey) << "\" stroke=\"#d62728\" stroke-width=\"3\" "
                         << "marker-end=\"url(#head)\"/>"
                         << "<circle cx=\"" << num(X(s.x)) << "\" cy=\"" << num(Y(s.y))
                         << "\" r=\"3\" fill=\"#d62728\"/>"
-                        << "<text x=\"" << num(X(ex) + 6) << "\" y=\"" << num(Y(ey) + 4)
-                        << "\" font-size=\"11\" fill=\"#a01010\">" << escapeMarkup(s.label) << ' '
+                        << "<text class=\"label\" "
+                        << labelAt(s.label + " " + shortNumber(f / 1000) + " kN", X(ex) + 6, Y(ey) + 4, 11, false)
+                        << " font-size=\"11\" fill=\"#a01010\">" << escapeMarkup(s.label) << ' '
                         << escapeMarkup(shortNumber(f / 1000)) << " kN</text></g>\n";
                     break;
                 }
             }
         }
     };
-    pass(Sketch::Kind::Circle);
-    pass(Sketch::Kind::Segment);
-    pass(Sketch::Kind::Line);
-    pass(Sketch::Kind::Arrow);
+    auto drawAll = [&](std::ostringstream& out) {
+        out << std::setprecision(10);
+        for (Sketch::Kind k : {Sketch::Kind::Circle, Sketch::Kind::Segment, Sketch::Kind::Line, Sketch::Kind::Arrow})
+            pass(out, k);
+    };
+    drawAll(body);  // collects the labels' wanted boxes
+    placed = placeLabels(wanted);
+    collecting = false;
+    body.str("");
+    drawAll(body);
+    svg << body.str();
 
     // Legend: the roles drawn, and the force scale.
     const double lx = width - kLegendWidth + 10;

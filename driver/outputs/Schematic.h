@@ -60,6 +60,27 @@ std::vector<std::string> writeSchematics(const std::string& dir, const std::stri
                                          const std::vector<SchematicFrame>& frames, bool angles,
                                          std::string& warning);
 
+/// A text label's box in picture pixels (x right, y down): its top-left
+/// corner and size.
+struct LabelBox {
+    double x = 0, y = 0, width = 0, height = 0;
+};
+
+/// Whether two boxes overlap (touching edges do not).
+bool labelBoxesOverlap(const LabelBox& a, const LabelBox& b);
+
+/// Label placement: each box in turn keeps its place unless it overlaps an
+/// earlier (already placed) one; then it moves to the nearest free place
+/// found by stepping one box height (plus 2 px) down, then up, alternately,
+/// up to 30 steps each way, and failing that one box width right. Returns
+/// the placed boxes, in order.
+std::vector<LabelBox> placeLabels(const std::vector<LabelBox>& boxes);
+
+/// The box of `text` at font size `size` [px] drawn at (x, y), the baseline
+/// point (`middle`: text-anchor middle, else start), estimated with an
+/// average glyph width of 0.62 em.
+LabelBox textBox(const std::string& text, double x, double y, double size, bool middle);
+
 /// The common arrow scale of `frames`: the largest force is drawn 0.4 of the
 /// drawing's extent long [m/N] (0 when there is no force); `referenceForce`
 /// [N] receives a round force near half the largest for the legend.

@@ -151,12 +151,64 @@ std::vector<std::vector<std::size_t>> plotPanels(const AnalysisResult& result, c
     return panels;
 }
 
+std::vector<ModeShapeBars> modeShapeBars(const AnalysisResult& result) {
+    std::vector<ModeShapeBars> out;
+    if (result.tableName != "mode_shapes" || result.columnNames.size() < 3 || result.columnNames[0] != "mode" ||
+        result.columnNames[1] != "natural_frequency")
+        return out;
+    for (const auto& row : result.rows) {
+        if (row.size() != result.columnNames.size()) continue;
+        char title[96];
+        std::snprintf(title, sizeof title, "mode %.0f: %.4g Hz", row[0], row[1]);
+        ModeShapeBars m{title, {}};
+        for (std::size_t c = 2; c < row.size(); ++c) m.bars.emplace_back(result.columnNames[c], row[c]);
+        out.push_back(m);
+    }
+    return out;
+}
+
+namespace {
+
+/// mode_shapes.png: one bar panel per mode, two columns when there are
+/// more than four modes.
+bool writeModeShapePlot(const std::string& png, const std::vector<ModeShapeBars>& modes) {
+    const std::size_t columns = modes.size() > 4 ? 2 : 1;
+    const std::size_t rows = (modes.size() + columns - 1) / columns;
+    std::ostringstream s;
+    s << "set grid ytics\nset style fill solid 0.7 border -1\nset boxwidth 0.6\nset yrange [*<0:0<*]\nset offsets 0.5, 0.5, 0, 0\n"
+      << "set xtics rotate by -30 left\nset ylabel 'amplitude [1]'\nset xzeroaxis lt -1\n";
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+        s << "$mode" << m << " << EOD\n";
+        for (std::size_t b = 0; b < modes[m].bars.size(); ++b) {
+            std::string name = modes[m].bars[b].first;  // a data-file string: double quotes, none inside
+            std::replace(name.begin(), name.end(), '"', '\'');
+            s << b << ' ' << formatDouble(modes[m].bars[b].second) << " \"" << name << "\"\n";
+        }
+        s << "EOD\n";
+    }
+    s << "set multiplot layout " << rows << "," << columns << " title 'mode shapes by body'\n";
+    for (std::size_t m = 0; m < modes.size(); ++m)
+        s << "set title " << quoteForGnuplot(modes[m].title) << "\nplot $mode" << m
+          << " using 1:2:xtic(3) with boxes lc rgb '#1f77b4' notitle\n";
+    s << "unset multiplot\n";
+    return renderGnuplotPng(png, s.str(), columns == 1 ? 900 : 1400, static_cast<int>(260 * rows) + 80);
+}
+
+}  // namespace
+
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning) {
     std::vector<std::string> written;
     if (!gnuplotAvailable()) {
         warning = "gnuplot not found: no plots written (scripts/install-deps installs it)";
         return written;
+    }
+    const auto modes = modeShapeBars(result);
+    if (!modes.empty()) {
+        if (writeModeShapePlot(dir + "/mode_shapes.png", modes))
+            written.push_back(dir + "/mode_shapes.png");
+        else
+            warning = "gnuplot failed for plot mode_shapes";
     }
     for (const auto& plot : result.plots) {
         if (plot.second.empty()) continue;

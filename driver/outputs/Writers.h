@@ -31,7 +31,9 @@ std::vector<std::string> writeResultFiles(const std::string& dir, const ModelSpe
 /// summary.json: model, results with units, settings, statistics, and a
 /// separate "run" section with wall time and host.
 std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& result, const RunInfo& info);
-/// Writes one PNG per plot of the result with gnuplot, reading `csvPath`.
+/// Writes one PNG per plot of the result with gnuplot, reading `csvPath`,
+/// and for a mode_shapes table mode_shapes.png: a bar chart per mode with
+/// the bodies by name on the x axis.
 /// Returns the files written; a missing gnuplot yields none and a warning.
 /// The panels of one plot: its columns grouped so that within a panel the
 /// largest |value| of each column is within a factor 10 of the others
@@ -42,6 +44,17 @@ std::vector<std::vector<std::size_t>> plotPanels(const AnalysisResult& result, c
 
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning);
+
+/// One bar chart of a mode shape: its title ("mode 2: 14.3 Hz") and the
+/// amplitude of every body, by name, in the table's column order.
+struct ModeShapeBars {
+    std::string title;
+    std::vector<std::pair<std::string, double>> bars;
+};
+/// The bar charts of a `linearize` mode_shapes table (columns mode,
+/// natural_frequency, then one per body): one per row. Empty for any other
+/// table.
+std::vector<ModeShapeBars> modeShapeBars(const AnalysisResult& result);
 
 /// A string as a gnuplot string literal.
 std::string quoteForGnuplot(const std::string& s);

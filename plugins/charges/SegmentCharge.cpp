@@ -369,8 +369,10 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         const Vec3 b = drumMobod.getBodyOriginLocation(s);
         const double r = impl->params().drumRadius;
         k.circle("drum", b[0], b[1], r, drumName);
-        char lag[48];
-        std::snprintf(lag, sizeof lag, "lag %.0f deg", impl->calcLag(s) * 180 / M_PI);
+        // The lag in its convention (docs/charges.md: lag_from).
+        char lag[64];
+        std::snprintf(lag, sizeof lag, "lag %.0f deg from %s", impl->calcLag(s) * 180 / M_PI,
+                      impl->params().lagFrom == LagReference::Vertical ? "vertical" : "carrier radius");
         k.segment("charge", b[0], b[1], r, impl->calcDirection(s), impl->params().halfAngle, lag);
     });
     Force::Custom force(scene.forces(), impl);

@@ -12,6 +12,7 @@ usage: schematic_check.py MILLDYN SOURCE_DIR WORK_DIR
 import csv
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -95,6 +96,10 @@ for i in (1, 2, 3):
                       {("circle", "drum"): 2, ("path", "charge"): 2, ("circle", "fixed_gear"): 1,
                        ("line", "carrier"): 2, ("g", "arrow"): 3}, f"gear picture {i}")
 check(not os.path.exists(os.path.join(out, "schematic_4.svg")), "gear: three pictures for three angles")
+# Lags labelled in their convention (issue 20 item 13): on a carrier, from the carrier radius.
+if os.path.exists(os.path.join(out, "schematic_1.svg")):
+    text = open(os.path.join(out, "schematic_1.svg")).read()
+    check(re.search(r"lag -?\d+ deg from carrier radius<", text) is not None, "gear: lag labelled from the carrier radius")
 if shutil.which("rsvg-convert"):
     png = os.path.join(out, "schematic_1.png")
     check(os.path.exists(png) and os.path.getsize(png) > 1000, "gear: PNG written by rsvg-convert")
@@ -110,6 +115,15 @@ if r.returncode == 0:
     doc = xml.dom.minidom.parse(os.path.join(out, "schematic_2.svg"))
     check(abs(float(doc.documentElement.getAttribute("data-key")) - 0.3) < 1e-9, "gear start: nearest sample drawn")
     check("nearest" in open(os.path.join(out, "schematic_2.svg")).read(), "gear start: the caption says so")
+
+# A tumbling mill on a fixed axis: its lag is labelled from the vertical.
+out = os.path.join(work, "tumbling")
+r = run(["run", os.path.join(models, "tumbling_ball_mill_3x4m.yaml"), "--quiet", "--out", out, "--scenario", "running",
+         "--set", "scenarios.running.end_time=0.2 s", "--schematic-at", "0.1 s"])
+check(r.returncode == 0, "tumbling: run --schematic exits 0: " + r.stderr)
+if r.returncode == 0:
+    text = open(os.path.join(out, "schematic_1.svg")).read()
+    check(re.search(r"lag -?\d+ deg from vertical<", text) is not None, "tumbling: lag labelled from the vertical")
 
 # Seed 002: the Fig. 3 turn at two angles.
 out = os.path.join(work, "belt")

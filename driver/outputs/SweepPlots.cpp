@@ -1,0 +1,243 @@
+#include "driver/outputs/SweepPlots.h"
+
+#include "driver/outputs/Writers.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace milldyn {
+namespace {
+
+/// One CSV record; fields may be quoted ("" is a quote inside).
+std::vector<std::string> splitCsvLine(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted) {
+            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+                out.back() += '"';
+                ++i;
+            } else if (c == '"') {
+                quoted = false;
+            } else {
+                out.back() += c;
+            }
+        } else if (c == '"') {
+            quoted = true;
+        } else if (c == ',') {
+            out.emplace_back();
+        } else {
+            out.back() += c;
+        }
+    }
+    return out;
+}
+
+/// "path[unit]" → (path, unit).
+std::pair<std::string, std::string> splitHeader(const std::string& h) {
+    const auto open = h.rfind('[');
+    if (open == std::string::npos || h.back() != ']') return {h, ""};
+    return {h.substr(0, open), h.substr(open + 1, h.size() - open - 2)};
+}
+
+double parseNumber(const std::string& text) {
+    if (text.empty()) return std::numeric_limits<double>::quiet_NaN();
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used != text.size()) throw std::invalid_argument("sweep.csv: '" + text + "' is not a number");
+    return v;
+}
+
+std::string axisLabel(const SweepTable& t, std::size_t a) {
+    return t.inputNames[a] + " [" + t.inputUnits[a] + "]";
+}
+
+/// A gnuplot data block `name` of (x, y) rows; a NaN y breaks the line.
+void dataBlock(std::ostringstream& s, const std::string& name, const std::vector<std::pair<double, double>>& xy) {
+    s << "$" << name << " << EOD\n";
+    for (const auto& p : xy) {
+        if (std::isfinite(p.second))
+            s << formatDouble(p.first) << ' ' << formatDouble(p.second) << '\n';
+        else
+            s << '\n';
+    }
+    s << "EOD\n";
+}
+
+}  // namespace
+
+SweepTable parseSweepTable(const std::string& csv) {
+    std::istringstream in(csv);
+    std::string line;
+    if (!std::getline(in, line)) throw std::invalid_argument("sweep.csv is empty");
+    const auto header = splitCsvLine(line);
+    const auto status = std::find(header.begin(), header.end(), "status");
+    if (header.empty() || header.front() != "index[1]" || status == header.end() || header.back() != "diagnostic")
+        throw std::invalid_argument("sweep.csv: header is not index[1],inputs...,status,results...,diagnostic");
+    const std::size_t firstResult = std::size_t(status - header.begin()) + 1;
+    SweepTable t;
+    for (std::size_t i = 1; i + 1 < header.size(); ++i) {
+        if (i + 1 == firstResult) continue;
+        const auto nu = splitHeader(header[i]);
+        if (i < firstResult) {
+            t.inputNames.push_back(nu.first);
+            t.inputUnits.push_back(nu.second);
+        } else {
+            t.resultNames.push_back(nu.first);
+            t.resultUnits.push_back(nu.second);
+        }
+    }
+    while (std::getline(in, line)) {
+        if (line.empty()) continue;
+        const auto f = splitCsvLine(line);
+        if (f.size() != header.size())
+            throw std::invalid_argument("sweep.csv: a row has " + std::to_string(f.size()) + " fields, the header " +
+                                        std::to_string(header.size()));
+        std::vector<double> inputs, results;
+        for (std::size_t i = 1; i + 1 < firstResult; ++i) inputs.push_back(parseNumber(f[i]));
+        for (std::size_t i = firstResult; i + 1 < f.size(); ++i) results.push_back(parseNumber(f[i]));
+        t.inputs.push_back(inputs);
+        t.results.push_back(results);
+    }
+    return t;
+}
+
+SweepLayout inferSweepLayout(const SweepTable& t) {
+    std::set<std::vector<double>> combinations(t.inputs.begin(), t.inputs.end());
+    std::size_t product = 1;
+    for (std::size_t a = 0; a < t.inputNames.size(); ++a) {
+        std::set<double> distinct;
+        for (const auto& row : t.inputs) distinct.insert(row[a]);
+        product *= distinct.size();
+    }
+    return combinations.size() == t.inputs.size() && product == t.inputs.size() ? SweepLayout::Grid
+                                                                                 : SweepLayout::Sample;
+}
+
+std::vector<std::pair<double, std::vector<std::size_t>>> sweepLines(const SweepTable& t, std::size_t groupAxis) {
+    const std::size_t xAxis = groupAxis == 0 ? 1 : 0;
+    std::vector<std::pair<double, std::vector<std::size_t>>> lines;
+    std::set<double> values;
+    for (const auto& row : t.inputs) values.insert(row[groupAxis]);
+    for (double v : values) {
+        std::vector<std::size_t> points;
+        for (std::size_t i = 0; i < t.inputs.size(); ++i)
+            if (t.inputs[i][groupAxis] == v) points.push_back(i);
+        std::stable_sort(points.begin(), points.end(),
+                         [&](std::size_t a, std::size_t b) { return t.inputs[a][xAxis] < t.inputs[b][xAxis]; });
+        lines.emplace_back(v, points);
+    }
+    return lines;
+}
+
+std::string plotFileStem(const std::string& name) {
+    std::string out;
+    for (char c : name)
+        out += (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.') ? c : '_';
+    return out.empty() ? "_" : out;
+}
+
+std::vector<std::string> writeSweepPlots(const std::string& dir, SweepLayout layout, std::string& warning) {
+    std::vector<std::string> written;
+    std::ifstream in(dir + "/sweep.csv");
+    std::stringstream text;
+    text << in.rdbuf();
+    SweepTable t;
+    try {
+        t = parseSweepTable(text.str());
+    } catch (const std::exception& e) {
+        warning = std::string("no sweep plots: ") + e.what();
+        return written;
+    }
+    if (t.inputNames.empty() || t.resultNames.empty() || t.inputs.empty()) {
+        warning = "no sweep plots: no point has a result";
+        return written;
+    }
+    if (!gnuplotAvailable()) {
+        warning = "gnuplot not found: no sweep plots written (scripts/install-deps.sh installs it)";
+        return written;
+    }
+    if (layout == SweepLayout::Infer) layout = inferSweepLayout(t);
+    const std::size_t axes = t.inputNames.size();
+    const bool lines = layout == SweepLayout::Grid && axes <= 2;
+    std::vector<std::string> skipped;
+    for (std::size_t r = 0; r < t.resultNames.size(); ++r) {
+        const bool any = std::any_of(t.results.begin(), t.results.end(),
+                                     [&](const std::vector<double>& row) { return std::isfinite(row[r]); });
+        if (!any) {
+            skipped.push_back(t.resultNames[r]);
+            continue;
+        }
+        const std::string yLabel = t.resultNames[r] + " [" + t.resultUnits[r] + "]";
+        std::ostringstream s;
+        s << "set grid\nset key outside right\n";
+        int height = 560;
+        if (lines) {
+            // x: the first axis; one line per value of the second, if any.
+            const auto groups = axes == 2 ? sweepLines(t, 1) : sweepLines(t, 0);
+            std::vector<std::string> titles;
+            for (std::size_t g = 0; g < groups.size() && axes == 2; ++g) {
+                std::vector<std::pair<double, double>> xy;
+                for (std::size_t i : groups[g].second) xy.emplace_back(t.inputs[i][0], t.results[i][r]);
+                dataBlock(s, "line" + std::to_string(g), xy);
+                titles.push_back(t.inputNames[1] + " = " + formatDouble(groups[g].first) + " " + t.inputUnits[1]);
+            }
+            if (axes == 1) {
+                std::vector<std::size_t> order(t.inputs.size());
+                std::iota(order.begin(), order.end(), 0);
+                std::stable_sort(order.begin(), order.end(),
+                                 [&](std::size_t a, std::size_t b) { return t.inputs[a][0] < t.inputs[b][0]; });
+                std::vector<std::pair<double, double>> xy;
+                for (std::size_t i : order) xy.emplace_back(t.inputs[i][0], t.results[i][r]);
+                dataBlock(s, "line0", xy);
+                titles.push_back(t.resultNames[r]);
+            }
+            s << "set title " << quoteForGnuplot(t.resultNames[r] + " against " + t.inputNames[0]) << "\n"
+              << "set xlabel " << quoteForGnuplot(axisLabel(t, 0)) << "\nset ylabel " << quoteForGnuplot(yLabel)
+              << "\nplot ";
+            for (std::size_t g = 0; g < titles.size(); ++g)
+                s << (g ? ", " : "") << "$line" << g << " using 1:2 with linespoints lw 1.5 pt 7 ps 0.6 title "
+                  << quoteForGnuplot(titles[g]);
+            s << "\n";
+        } else {
+            // A scatter against every axis, one panel each.
+            if (axes > 1)
+                s << "set multiplot layout " << axes << ",1 title "
+                  << quoteForGnuplot(t.resultNames[r] + " at the sampled points") << "\n";
+            for (std::size_t a = 0; a < axes; ++a) {
+                std::vector<std::pair<double, double>> xy;
+                for (std::size_t i = 0; i < t.inputs.size(); ++i)
+                    if (std::isfinite(t.results[i][r])) xy.emplace_back(t.inputs[i][a], t.results[i][r]);
+                dataBlock(s, "axis" + std::to_string(a), xy);
+                if (axes == 1)
+                    s << "set title " << quoteForGnuplot(t.resultNames[r] + " at the sampled points") << "\n";
+                s << "set xlabel " << quoteForGnuplot(axisLabel(t, a)) << "\nset ylabel " << quoteForGnuplot(yLabel)
+                  << "\nplot $axis" << a << " using 1:2 with points pt 7 ps 0.8 notitle\n";
+            }
+            if (axes > 1) s << "unset multiplot\n";
+            height = axes > 1 ? static_cast<int>(300 * axes) + 60 : 560;
+        }
+        const std::string png = dir + "/sweep_" + plotFileStem(t.resultNames[r]) + ".png";
+        if (!renderGnuplotPng(png, s.str(), 1000, height)) {
+            warning = "gnuplot failed for sweep plot " + t.resultNames[r];
+            continue;
+        }
+        written.push_back(png);
+    }
+    if (!skipped.empty() && warning.empty()) {
+        warning = "no sweep plot of";
+        for (const auto& n : skipped) warning += " " + n;
+        warning += ": no point has a value";
+    }
+    return written;
+}
+
+}  // namespace milldyn
