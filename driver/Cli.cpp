@@ -478,7 +478,7 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
             << std::setprecision(3) << wall << " s wall\n  wrote " << summary.files.front() << "\n";
     if (!a.quiet && summary.files.size() > 1)
         out << "  wrote " << summary.files.size() - 1 << " plots (sweep_*.png)\n";
-    if (summary.total > 0 && summary.failed == summary.total) {
+    if (summary.total > 0 && summary.errors == summary.total) {
         err << "milldyn: sweep failed: every one of its " << summary.total << " points failed (see the diagnostic column of "
             << summary.files.front() << ")\n";
         return 1;

@@ -45,6 +45,9 @@ const std::vector<std::string>& integratorNames() {
 
 namespace {
 
+/// The tag of an override value given as an SI number (Override::bareNumberIsSI).
+const char* const kSiNumberTag = "!milldyn-si";
+
 std::string joinWords(const std::vector<std::string>& words) {
     std::string out;
     for (const auto& w : words) out += (out.empty() ? "" : ", ") + w;
@@ -375,7 +378,7 @@ private:
     double readNumber(const YAML::Node& n, const std::string& key, const std::string& unit) const {
         const std::string text = scalar(n, key);
         try {
-            const double v = units::toSIRequiringUnit(text, unit);
+            const double v = n.Tag() == kSiNumberTag ? units::toSI(text, unit) : units::toSIRequiringUnit(text, unit);
             if (!std::isfinite(v)) throw error(n, key, "value is not finite");
             return v;
         } catch (const units::UnitError& e) {
@@ -1082,7 +1085,13 @@ private:
         if (o.path == "include" || o.path.rfind("include.", 0) == 0)
             throw SpecError(at, o.path, "includes are resolved before --set applies: change the file, or --set the "
                                         "included values by their names");
+        const std::size_t before = m_overridden.size();
         setValue(root, o.path, nullptr, o.value, at);
+        // A number given as SI (Override::bareNumberIsSI) is marked so that
+        // readNumber takes it without a unit.
+        if (o.bareNumberIsSI)
+            for (std::size_t i = before; i < m_overridden.size(); ++i)
+                if (m_overridden[i].first.IsScalar()) m_overridden[i].first.SetTag(kSiNumberTag);
     }
 
     /// Sets the value at `path` (see applyOverride) to `valueNode` (a node of

@@ -26,6 +26,9 @@ struct ModelFileReader {
 struct Override {
     std::string path;
     std::string value;
+    /// A bare number in `value` is SI (the Python module's numbers); in a
+    /// model file and on the command line a dimensional value needs its unit.
+    bool bareNumberIsSI = false;
 };
 
 /// A model without `gravity:` whose elements are loaded by weight (their

@@ -190,7 +190,10 @@ std::string formatTable(const std::vector<Json>& points) {
 SweepSummary writeTable(const std::string& outDir, std::vector<Json> points, SweepSummary summary) {
     std::sort(points.begin(), points.end(),
               [](const Json& a, const Json& b) { return a["index"].get<std::size_t>() < b["index"].get<std::size_t>(); });
-    for (const auto& p : points) summary.failed += p["status"] != "ok";
+    for (const auto& p : points) {
+        summary.failed += p["status"] != "ok";
+        summary.errors += p["status"] == "failed" || p["status"] == "bad_input";
+    }
     summary.total = points.size();
     writeFileAtomically(outDir + "/sweep.csv", formatTable(points));
     summary.files.push_back(outDir + "/sweep.csv");

@@ -60,6 +60,9 @@ struct SweepOptions {
 
 struct SweepSummary {
     std::size_t run = 0, resumed = 0, failed = 0, total = 0;
+    /// Points whose analysis did not run to its end (status failed or
+    /// bad_input); a stalled or unfinished start is a verdict, not an error.
+    std::size_t errors = 0;
     std::vector<std::string> files;
 };
 

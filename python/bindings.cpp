@@ -18,6 +18,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <tuple>
+
 #include <chrono>
 #include <memory>
 #include <thread>
@@ -65,9 +67,12 @@ struct RunHandle {
     RunOutcome run;
 };
 
-std::vector<Override> toOverrides(const std::vector<std::pair<std::string, std::string>>& pairs) {
+/// (path, text, text is an SI number): milldyn._overrides' triples.
+using OverrideTriples = std::vector<std::tuple<std::string, std::string, bool>>;
+
+std::vector<Override> toOverrides(const OverrideTriples& triples) {
     std::vector<Override> out;
-    for (const auto& [path, value] : pairs) out.push_back({path, value});
+    for (const auto& [path, value, si] : triples) out.push_back({path, value, si});
     return out;
 }
 
@@ -186,7 +191,7 @@ PYBIND11_MODULE(_milldyn, m) {
         .def_property_readonly("description", [](const SpecHandle& h) { return h.spec.description; })
         .def_property_readonly("analysis", [](const SpecHandle& h) { return h.spec.scenario.type; });
 
-    m.def("read_model", [](const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
+    m.def("read_model", [](const std::string& path, const OverrideTriples& overrides) {
         auto h = std::make_unique<SpecHandle>();
         py::gil_scoped_release release;
         h->spec = readModel(path, toOverrides(overrides));
@@ -294,7 +299,7 @@ PYBIND11_MODULE(_milldyn, m) {
             return py::make_tuple(files, warning);
         });
 
-    m.def("sweep", [](const std::string& model, const std::vector<std::pair<std::string, std::string>>& overrides,
+    m.def("sweep", [](const std::string& model, const OverrideTriples& overrides,
                       const std::vector<std::string>& grids, const std::vector<std::string>& ranges, std::size_t lhs,
                       unsigned long seed, unsigned jobs, const std::string& outDir) {
         SweepSummary s;

@@ -74,18 +74,25 @@ def _text(value):
     raise TypeError("an override's value must be one number (SI) or text with a unit, got %r" % (value,))
 
 
+def _is_si_number(value):
+    return not isinstance(value, (bool, str)) and isinstance(value, (int, float, _np.integer, _np.floating))
+
+
 def _overrides(set=None, scenario=None, preset=None, **options):
+    """(path, text, si) triples: si says the text is a bare SI number (a
+    Python number), which the reader takes without a unit; text with units
+    is read as the CLI reads --set."""
     out = []
     if scenario is not None:
-        out.append(("use_scenario", str(scenario)))
+        out.append(("use_scenario", str(scenario), False))
     if preset is not None:
-        out.append(("preset", str(preset)))
+        out.append(("preset", str(preset), False))
     for path, value in (set or {}).items():
-        out.append((str(path), _text(value)))
+        out.append((str(path), _text(value), _is_si_number(value)))
     for key, path in (("integrator", "integrator.name"), ("accuracy", "integrator.accuracy"),
                       ("end_time", "scenario.end_time")):
         if options.get(key) is not None:
-            out.append((path, _text(options[key])))
+            out.append((path, _text(options[key]), _is_si_number(options[key])))
     return out
 
 

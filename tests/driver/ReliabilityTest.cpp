@@ -81,7 +81,7 @@ TEST(StaleSweepResume, AnotherModelIntoTheSameDirectoryIsRefusedWithTheReason) {
 TEST(StaleSweepResume, OtherSetScenarioOrIntegratorIsAnotherSweep) {
     const std::string d = freshDir("stale-set");
     runSweep(torqueGrid(), sweepOptions("burr_mill_5p5kW_idle.yaml", d));
-    for (const Override& extra : std::vector<Override>{{"elements.belt.damping", "0.3"},
+    for (const Override& extra : std::vector<Override>{{"elements.belt.damping", "0.3 N*m*s/rad"},
                                                         {"integrator.accuracy", "1e-5"},
                                                         {"scenario.end_time", "0.25 s"}}) {
         SCOPED_TRACE(extra.path);
