@@ -190,9 +190,9 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     }
     result.results.push_back({"avoid_bands", double(bands), "1", "speed bands above the threshold"});
     // The load's first body is the rotor whose speed is swept.
-    for (const auto& b : scene->bodies())
-        if (!load->bodies().empty() && b.mobod.getMobilizedBodyIndex() == load->bodies()[0].getMobilizedBodyIndex())
-            addOrderExcitations(*scene, steady, lm, b, wMin, wMax, result);
+    for (const auto& rotor : scene->bodies())
+        if (!load->bodies().empty() && rotor.mobod.getMobilizedBodyIndex() == load->bodies()[0].getMobilizedBodyIndex())
+            addOrderExcitations(*scene, steady, lm, rotor, wMin, wMax, result);
     std::vector<std::size_t> cols;
     for (std::size_t o = 0; o < outputs.size(); ++o) cols.push_back(2 + o);
     result.plots.push_back({"resonance_map", cols});
