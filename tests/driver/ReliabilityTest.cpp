@@ -220,7 +220,7 @@ TEST(ModelFileReading, DeviceAndFifoAreRefusedWithoutBlocking) {
     const std::string fifo = freshDir("fifo") + ".yaml";
     fs::remove(fifo);
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-    for (const std::string path : {std::string("/dev/zero"), fifo}) {
+    for (const std::string& path : {std::string("/dev/zero"), fifo}) {
         SCOPED_TRACE(path);
         try {
             readModelFile(path, defaultModelReader());
@@ -240,7 +240,7 @@ TEST(ModelFileReading, NulByteIsRefusedAtItsLineAndColumn) {
 }
 
 TEST(ModelFileReading, NonUtf8IsRefusedAtTheByte) {
-    for (const std::string bad : {std::string("\xff"), std::string("\xc3("), std::string("\xed\xa0\x80"),
+    for (const std::string& bad : {std::string("\xff"), std::string("\xc3("), std::string("\xed\xa0\x80"),
                                   std::string("\xc0\xaf")}) {
         const std::string text = "format_version: 1\nname: mill" + bad + "\n";
         test::expectSpecError(test::readErrorOf("m.yaml", text, {}), "m.yaml", 2, 11, "<text>", "is not UTF-8");
