@@ -84,7 +84,9 @@ TEST_F(CliChargeSweep, LagSweepFollowsSinAlpha) {
         // The grid column keeps the unit of its bounds: elements.charge.lag[deg].
         const double expected = oracles::torqueArmTorque({1.5, 4.0, 4800.0, 0.30}, lag[i] * kPi / 180, 9.81);
         EXPECT_NEAR(torque[i], expected, 1e-9 * expected) << lag[i];
-        if (i > 0) EXPECT_GT(power[i], power[i - 1]);
+        if (i > 0) {
+            EXPECT_GT(power[i], power[i - 1]);
+        }
     }
 }
 
