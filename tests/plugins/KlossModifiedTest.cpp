@@ -14,6 +14,7 @@
 #include "driver/ModelFile.h"
 #include "driver/analyses/Analysis.h"
 #include "plugins/motors/TorqueSpeedCurve.h"
+#include "tests/driver/ReaderTestHelpers.h"
 #include "validation/oracles/StartOracle.h"
 
 namespace milldyn {
@@ -126,37 +127,25 @@ TEST(KlossModified, InertiaStartMatchesTheClosedFormAndItsQuadrature) {
 }
 
 // Bad input: the bench file with its law lines replaced; one line
-// file:line:col: error: key: reason.
-std::string errorOf(const std::string& lawLines) {
+// file:line:col: error: key: reason (tests/driver/ReaderTestHelpers.h).
+TEST(KlossModified, BadInputGivesOneLocatedLine) {
     std::ifstream in(std::string(MILLDYN_SOURCE_DIR) + "/models/start_bench_kloss_modified.yaml");
     std::stringstream buffer;
     buffer << in.rdbuf();
-    std::string text = buffer.str();
+    const std::string bench = buffer.str();
     const std::string stated = "    law: kloss_modified\n    locked_rotor_ratio: 1.0\n";
-    const std::size_t at = text.find(stated);
-    if (at == std::string::npos) return "bench file changed";
-    text.replace(at, stated.size(), lawLines);
-    try {
-        readModelText(text, "m.yaml", defaultModelReader());
-    } catch (const SpecError& e) {
-        return e.formatted();
-    }
-    return "";
-}
-
-TEST(KlossModified, BadInputGivesOneLocatedLine) {
-    const std::string above = errorOf("    law: kloss_modified\n    locked_rotor_ratio: 3\n");
-    EXPECT_EQ(above.rfind("m.yaml:21:25: error: motor.locked_rotor_ratio: starting torque above the breakdown", 0), 0u)
-        << above;
-    const std::string none = errorOf("    law: kloss_modified\n    locked_rotor_ratio: 2\n");
-    EXPECT_NE(none.find("error: motor.locked_rotor_ratio: no modified Kloss curve"), std::string::npos) << none;
-    EXPECT_EQ(none.find('\n'), std::string::npos) << none;
-    EXPECT_NE(errorOf("    law: kloss_modified\n").find("error: motor.law: the kloss_modified law needs locked_rotor_ratio"),
-              std::string::npos);
-    EXPECT_NE(errorOf("    law: kloss\n    locked_rotor_ratio: 1\n").find("error: motor.locked_rotor_ratio: not used with law kloss"),
-              std::string::npos)
-        << errorOf("    law: kloss\n    locked_rotor_ratio: 1\n");
-    EXPECT_EQ(errorOf("    law: kloss_modified\n    locked_rotor_ratio: 1\n"), "");
+    auto errorOf = [&](const std::string& lawLines) {
+        return test::readErrorOf("m.yaml", test::replacedIn(bench, stated, lawLines), {});
+    };
+    test::expectSpecError(errorOf("    law: kloss_modified\n    locked_rotor_ratio: 3\n"), "m.yaml", 21, 25,
+                          "motor.locked_rotor_ratio", "starting torque above the breakdown torque (3 >= breakdown ratio 2.5)");
+    test::expectSpecError(errorOf("    law: kloss_modified\n    locked_rotor_ratio: 2\n"), "m.yaml", 21, 25,
+                          "motor.locked_rotor_ratio", "must lie in [0.474769, 1.17532)");
+    test::expectSpecError(errorOf("    law: kloss_modified\n"), "m.yaml", 20, 10, "motor.law",
+                          "the kloss_modified law needs locked_rotor_ratio");
+    test::expectSpecError(errorOf("    law: kloss\n    locked_rotor_ratio: 1\n"), "m.yaml", 21, 25,
+                          "motor.locked_rotor_ratio", "not used with law kloss");
+    EXPECT_NO_THROW(test::readText("m.yaml", bench, {}));
 }
 
 }  // namespace
