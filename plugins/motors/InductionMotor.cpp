@@ -86,7 +86,8 @@ using Law = TorqueSpeedCurveParams::Law;
 using StarterKind = StarterParams::Kind;
 
 const std::vector<std::pair<std::string, Law>> kLaws = {
-    {"kloss", Law::Kloss}, {"kloss_modified", Law::KlossModified}, {"linear", Law::Linear}, {"catalogue", Law::Catalogue}, {"table", Law::Table}};
+    {"kloss", Law::Kloss}, {"linear", Law::Linear}, {"catalogue", Law::Catalogue}, {"table", Law::Table},
+    {"kloss_modified", Law::KlossModified}};
 const std::vector<StarterKind> kStarters = {StarterKind::DirectOnLine,       StarterKind::StarDelta,
                                             StarterKind::SoftStart,          StarterKind::FrequencyConverter,
                                             StarterKind::RotorResistance,    StarterKind::LiquidResistance};
