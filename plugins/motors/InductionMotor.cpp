@@ -86,7 +86,8 @@ using Law = TorqueSpeedCurveParams::Law;
 using StarterKind = StarterParams::Kind;
 
 const std::vector<std::pair<std::string, Law>> kLaws = {
-    {"kloss", Law::Kloss}, {"linear", Law::Linear}, {"catalogue", Law::Catalogue}, {"table", Law::Table}};
+    {"kloss", Law::Kloss}, {"linear", Law::Linear}, {"catalogue", Law::Catalogue}, {"table", Law::Table},
+    {"kloss_modified", Law::KlossModified}};
 const std::vector<StarterKind> kStarters = {StarterKind::DirectOnLine,       StarterKind::StarDelta,
                                             StarterKind::SoftStart,          StarterKind::FrequencyConverter,
                                             StarterKind::RotorResistance,    StarterKind::LiquidResistance};
@@ -108,6 +109,7 @@ StarterKind starterOf(const std::string& word) {
 // the burr-mill files carry them for a --set law=linear).
 const std::map<std::string, std::vector<std::string>> kLawKeys = {
     {"catalogue", {"locked_rotor_ratio", "pull_up_ratio", "pull_up_speed", "breakdown_speed"}},
+    {"kloss_modified", {"locked_rotor_ratio"}},
     {"table", {"curve_speeds", "curve_torques", "curve_currents"}},
 };
 const std::map<std::string, std::vector<std::string>> kStarterKeys = {
@@ -185,6 +187,15 @@ void crossCheckInductionMotor(const ElementSpec& e) {
             if (e.number("pull_up_ratio") > std::min(lambda, e.number("locked_rotor_ratio")))
                 throw e.error("pull_up_ratio", "the pull-up torque is the curve's minimum below breakdown: it "
                                                "cannot exceed the locked-rotor or breakdown ratio");
+        }
+    }
+    if (law == "kloss_modified") {
+        if (!e.has("locked_rotor_ratio"))
+            throw e.error("law", "the kloss_modified law needs locked_rotor_ratio (the starting torque over rated)");
+        try {
+            fitModifiedKloss((wc - wn) / wc, e.number("breakdown_ratio"), e.number("locked_rotor_ratio"));
+        } catch (const std::invalid_argument& x) {
+            throw e.error("locked_rotor_ratio", x.what());
         }
     }
     if (law == "table") {
@@ -317,6 +328,13 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     }
     if (p.law == Law::Kloss)
         scene.addDerivedValue({spec.name + ".breakdown_slip", c.breakdownSlip(), "1", "Kloss sk = sn·(λ + √(λ² − 1))"});
+    if (p.law == Law::KlossModified) {
+        scene.addDerivedValue({spec.name + ".breakdown_slip", c.breakdownSlip(), "1",
+                               "modified Kloss sk, from M(sn) = Mn and M(1) = Mst"});
+        scene.addDerivedValue({spec.name + ".stator_resistance_ratio", c.asymmetry(), "1",
+                               "modified Kloss a = R1/R2', from M(sn) = Mn and M(1) = Mst"});
+        scene.addDerivedValue({spec.name + ".locked_rotor_torque", c.torque(0), "N*m", "curve torque at standstill"});
+    }
     if (!c.pointSpeeds().empty()) {
         // The monotone cubic's maximum lies on a data point (no overshoot).
         const auto& T = c.pointTorques();
@@ -336,7 +354,7 @@ void registerInductionMotor(ElementRegistry& registry) {
     ElementSchema s;
     s.type = "InductionMotor";
     s.doc = "Asynchronous motor torque on a shaft: linear working branch (seed 003 eqs 3-4), Kloss curve, "
-            "catalogue points or a torque-speed table (monotone cubic); starters direct-on-line, star-delta, "
+            "modified Kloss curve with a stated starting torque, catalogue points or a torque-speed table (monotone cubic); starters direct-on-line, star-delta, "
             "soft start, frequency converter, slip-ring rotor resistance steps or liquid resistance; optional "
             "switch-off time.";
     using P = ParamSchema;
@@ -350,11 +368,11 @@ void registerInductionMotor(ElementRegistry& registry) {
         P::quantity("rated_torque", "N*m", "nameplate torque Mn").above(0),
         P::quantity("rated_speed", "rad/s", "nameplate speed ωn, below synchronous").above(0),
         P::quantity("synchronous_speed", "rad/s", "synchronous speed ωc").above(0),
-        P::quantity("breakdown_ratio", "1", "Kloss, catalogue: breakdown over rated torque λ")
+        P::quantity("breakdown_ratio", "1", "Kloss, kloss_modified, catalogue: breakdown over rated torque λ")
             .optional(2.2).above(1).atMost(10),
         P::quantity("linear_stall_torque", "N*m", "linear law: printed M00 (0: eq 4)").optional(0.0).atLeast(0),
         P::quantity("linear_slope", "N*m*s/rad", "linear law: printed b0 (0: eq 4)").optional(0.0).atLeast(0),
-        P::quantity("locked_rotor_ratio", "1", "catalogue: locked-rotor over rated torque").optional(0.0).above(0).atMost(10),
+        P::quantity("locked_rotor_ratio", "1", "catalogue, kloss_modified: locked-rotor (starting) over rated torque").optional(0.0).above(0).atMost(10),
         P::quantity("pull_up_ratio", "1", "catalogue: pull-up (minimum) over rated torque").optional(0.0).above(0).atMost(10),
         P::quantity("pull_up_speed", "rad/s", "catalogue: speed of the pull-up torque").optional(0.0).above(0),
         P::quantity("breakdown_speed", "rad/s", "catalogue: speed of the breakdown torque (default from Kloss sk)")

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -56,6 +57,57 @@ double MonotoneCubic::operator()(double x) const {
            (t3 - t2) * h * m_m[k + 1];
 }
 
+namespace {
+
+std::string number(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
+}  // namespace
+
+ModifiedKlossFit fitModifiedKloss(double sn, double lambda, double mu) {
+    if (!(std::isfinite(sn) && sn > 0 && sn < 1)) throw std::invalid_argument("rated slip must lie in (0, 1)");
+    if (!(std::isfinite(lambda) && lambda > 1)) throw std::invalid_argument("breakdown ratio must be > 1");
+    if (!(std::isfinite(mu) && mu > 0)) throw std::invalid_argument("starting torque ratio must be finite and > 0");
+    if (!(mu < lambda))
+        throw std::invalid_argument("starting torque above the breakdown torque (" + number(mu) +
+                                    " >= breakdown ratio " + number(lambda) + ")");
+    auto slipOf = [&](double q) {
+        const double C = lambda + q * (lambda - 1);
+        return sn * (C + std::sqrt(C * C - 1));
+    };
+    auto ratioOf = [&](double q) {
+        const double sk = slipOf(q);
+        return 2 * lambda * (1 + q) / (1 / sk + sk + 2 * q);
+    };
+    // q at which sk(q) = 1: C = (sn + 1/sn)/2.
+    const double qUnitSlip = (0.5 * (sn + 1 / sn) - lambda) / (lambda - 1);
+    if (!(qUnitSlip > 0))
+        throw std::invalid_argument("the Kloss breakdown slip of this rated slip and breakdown ratio is beyond "
+                                    "standstill (sk >= 1): no starting torque below breakdown");
+    const double qMax = std::min(1.0, qUnitSlip);
+    const double muLow = ratioOf(0), muHigh = ratioOf(qMax);
+    // μ within rounding of the classic Kloss value is that value (q = 0).
+    if (!(mu >= muLow * (1 - 1e-12) && mu < muHigh))
+        throw std::invalid_argument("no modified Kloss curve through these data: with rated slip " + number(sn) +
+                                    " and breakdown ratio " + number(lambda) +
+                                    " the starting torque ratio must lie in [" + number(muLow) + ", " +
+                                    number(muHigh) + ") (stator resistance 0 to R1/√(R1² + Xk²) → 1)");
+    double lo = 0, hi = qMax;  // ratioOf(lo) <= mu < ratioOf(hi)
+    for (int i = 0; i < 200 && hi - lo > 0; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        (ratioOf(mid) <= mu ? lo : hi) = mid;
+    }
+    const double q = std::abs(ratioOf(lo) - mu) <= std::abs(ratioOf(hi) - mu) ? lo : hi;
+    ModifiedKlossFit fit;
+    fit.breakdownSlip = slipOf(q);
+    fit.asymmetry = q / fit.breakdownSlip;
+    return fit;
+}
+
 TorqueSpeedCurve::TorqueSpeedCurve(const TorqueSpeedCurveParams& p) : m_params(p) {
     using Law = TorqueSpeedCurveParams::Law;
     auto finite = [](double v) { return std::isfinite(v); };
@@ -65,7 +117,7 @@ TorqueSpeedCurve::TorqueSpeedCurve(const TorqueSpeedCurveParams& p) : m_params(p
     if (!(p.ratedSpeed > 0 && p.ratedSpeed < p.synchronousSpeed))
         badParameter("rated_speed", p.ratedSpeed, "must lie in (0, synchronous_speed)");
     if (!finite(p.breakdownRatio)) badParameter("breakdown_ratio", p.breakdownRatio, "must be finite");
-    if ((p.law == Law::Kloss || p.law == Law::Catalogue) && !(p.breakdownRatio > 1))
+    if ((p.law == Law::Kloss || p.law == Law::KlossModified || p.law == Law::Catalogue) && !(p.breakdownRatio > 1))
         badParameter("breakdown_ratio", p.breakdownRatio, "must be > 1 (breakdown torque above rated)");
     if (!(finite(p.linearStallTorque) && p.linearStallTorque >= 0))
         badParameter("linear_stall_torque", p.linearStallTorque, "must be finite and >= 0");
@@ -84,7 +136,15 @@ TorqueSpeedCurve::TorqueSpeedCurve(const TorqueSpeedCurveParams& p) : m_params(p
     const double lambda = p.breakdownRatio;
     m_slipBreakdown = m_slipRated * (lambda + std::sqrt(std::max(0.0, lambda * lambda - 1)));
 
-    if (p.law == Law::Catalogue) {
+    if (p.law == Law::KlossModified) {
+        try {
+            const ModifiedKlossFit fit = fitModifiedKloss(m_slipRated, lambda, p.lockedRotorRatio);
+            m_slipBreakdown = fit.breakdownSlip;
+            m_asymmetry = fit.asymmetry;
+        } catch (const std::invalid_argument& e) {
+            badParameter("locked_rotor_ratio", p.lockedRotorRatio, e.what());
+        }
+    } else if (p.law == Law::Catalogue) {
         const double wk = p.breakdownSpeed > 0 ? p.breakdownSpeed : wc * (1 - m_slipBreakdown);
         if (!(p.lockedRotorRatio > 0 && finite(p.lockedRotorRatio)))
             badParameter("locked_rotor_ratio", p.lockedRotorRatio, "must be finite and > 0");
@@ -143,6 +203,13 @@ double TorqueSpeedCurve::torque(double omega) const {
             const double Mk = m_params.breakdownRatio * m_params.ratedTorque;
             // 2Mk/(s/sk + sk/s) written without the division by s, so s = 0 is fine.
             return 2 * Mk * s * sk / (s * s + sk * sk);
+        }
+        case Law::KlossModified: {
+            const double s = (m_params.synchronousSpeed - omega) / m_params.synchronousSpeed;
+            const double sk = m_slipBreakdown, q = m_asymmetry * sk;
+            const double Mk = m_params.breakdownRatio * m_params.ratedTorque;
+            // Mk·2(1 + q)/(s/sk + sk/s + 2q) times s·sk over s·sk: finite at s = 0.
+            return 2 * Mk * (1 + q) * s * sk / (s * s + sk * sk + 2 * q * s * sk);
         }
         case Law::Catalogue:
         case Law::Table: return m_torque(omega);

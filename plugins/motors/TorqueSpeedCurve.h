@@ -41,7 +41,7 @@ private:
 
 /// The torque–speed laws an InductionMotor can follow. All SI.
 struct TorqueSpeedCurveParams {
-    enum class Law { Linear, Kloss, Catalogue, Table };
+    enum class Law { Linear, Kloss, KlossModified, Catalogue, Table };
     Law law = Law::Kloss;
     /// Rated (nameplate) torque Mn [N*m], > 0.
     double ratedTorque = 0;
@@ -55,7 +55,7 @@ struct TorqueSpeedCurveParams {
     /// replace the nameplate formula).
     double linearStallTorque = 0;
     double linearSlope = 0;
-    /// Catalogue: locked-rotor torque ratio Mst/Mn [-] (> 0).
+    /// Catalogue, modified Kloss: locked-rotor (starting) torque ratio Mst/Mn [-] (> 0).
     double lockedRotorRatio = 0;
     /// Catalogue: pull-up (minimum) torque ratio Mmin/Mn [-] and its speed
     /// [rad/s]; a ratio of 0 leaves the point out.
@@ -71,6 +71,36 @@ struct TorqueSpeedCurveParams {
     std::vector<double> tableCurrents;
 };
 
+/// The modified Kloss law's two constants, solved from the nameplate.
+struct ModifiedKlossFit {
+    /// Breakdown slip sk [-].
+    double breakdownSlip = 0;
+    /// Stator-resistance asymmetry a = R1/R2' [-] (a·sk = R1/√(R1² + Xk²) in [0, 1)).
+    double asymmetry = 0;
+};
+
+/**
+ * Solves the modified Kloss law M(s) = Mk·2(1 + a·sk)/(s/sk + sk/s + 2a·sk)
+ * (see TorqueSpeedCurve) for sk and a from the rated slip sn, the breakdown
+ * ratio λ = Mk/Mn and the starting torque ratio μ = M(1)/Mn.
+ *
+ * <pre>
+ *   q = a·sk (physically R1/√(R1² + Xk²), so 0 <= q < 1)
+ *   M(sn) = Mn:  sn/sk + sk/sn = 2λ + 2q(λ − 1)  =: 2C
+ *                ⇒ sk(q) = sn·(C + √(C² − 1))     (stable branch, sk > sn)
+ *   M(1) = μ·Mn: μ(q) = 2λ(1 + q)/(1/sk(q) + sk(q) + 2q)
+ * </pre>
+ *
+ * sk(q) rises with q, and while sk <= 1 so does μ(q) (both the numerator
+ * and 1/sk + sk move the same way): μ(q) = μ has one root on the bracket
+ * [0, q_max], q_max = 1 or the q at which sk = 1 if smaller (a breakdown
+ * beyond standstill has no starting torque below it), found by bisection
+ * to the last bit. q = 0 is the classic Kloss law. Throws
+ * std::invalid_argument with the reason (μ >= λ; μ outside [μ(0), μ(q_max)),
+ * the attainable range printed) when no solution exists.
+ */
+ModifiedKlossFit fitModifiedKloss(double ratedSlip, double breakdownRatio, double startingRatio);
+
 /**
  * Natural torque–speed curve of an induction motor (rated voltage, rated
  * frequency, rotor short-circuited, delta connection).
@@ -79,6 +109,14 @@ struct TorqueSpeedCurveParams {
  *   slip s = (ωc − ω)/ωc, sn = (ωc − ωn)/ωc
  *   Linear (seed 003 eqs 3-4): M = M00 − b0·ω, M00 = Mn·ωc/(ωc − ωn), b0 = Mn/(ωc − ωn)
  *   Kloss:      M = 2·Mk·s·sk/(s² + sk²), Mk = λ·Mn, sk = sn·(λ + √(λ² − 1))   (M(ωn) = Mn)
+ *   Modified Kloss (stator resistance kept; Chilikin, "Electric drive",
+ *   ch. 3 "Characteristics of the induction motor", eq. for M with
+ *   a = R1/R2'; Kopylov, "Electrical machines", same form):
+ *               M = Mk·2(1 + a·sk)/(s/sk + sk/s + 2a·sk)
+ *               = 2·Mk·(1 + q)·s·sk/(s² + sk² + 2q·s·sk),  q = a·sk,
+ *               with sk and a from M(sn) = Mn and M(1) = Mst (fitModifiedKloss).
+ *               Its maximum over s > 0 is Mk, at s = sk; on the generating
+ *               side (s < 0) the breakdown torque is Mk·(1 + q)/(1 − q).
  *   Catalogue:  the monotone cubic (MonotoneCubic) through
  *               (0, Mst), (ω_pu, M_pu), (ωk, Mk), (ωn, Mn), (ωc, 0)
  *               — the points of IEC 60034-12 / NEMA MG 1 catalogues
@@ -102,8 +140,10 @@ public:
 
     const TorqueSpeedCurveParams& params() const { return m_params; }
     double ratedSlip() const { return m_slipRated; }
-    /// Kloss breakdown slip sk [-] (used by the Kloss law).
+    /// Breakdown slip sk [-] (Kloss and modified Kloss laws).
     double breakdownSlip() const { return m_slipBreakdown; }
+    /// Modified Kloss: stator-resistance asymmetry a = R1/R2' [-] (0 otherwise).
+    double asymmetry() const { return m_asymmetry; }
     double linearStallTorque() const { return m_M00; }
     double linearSlope() const { return m_b0; }
     /// The interpolation's points (catalogue and table laws): speeds [rad/s], torques [N*m].
@@ -112,7 +152,7 @@ public:
 
 private:
     TorqueSpeedCurveParams m_params;
-    double m_M00 = 0, m_b0 = 0, m_slipRated = 0, m_slipBreakdown = 0;
+    double m_M00 = 0, m_b0 = 0, m_slipRated = 0, m_slipBreakdown = 0, m_asymmetry = 0;
     std::vector<double> m_pointSpeeds, m_pointTorques;
     MonotoneCubic m_torque, m_current;
 };

@@ -407,7 +407,7 @@ TEST(ModelFileErrors, CouplingWithOneBodyIsAListOfTheWrongLength) {
 
 TEST(ModelFileErrors, UnknownChoiceValueSuggestsTheNearestChoice) {
     const SpecError e = readError(replaced("law: kloss", "law: klos"));
-    expectError(e, 15, 10, "motor.law", "unknown value 'klos' (expected one of kloss, linear, catalogue, table) (did you mean 'kloss'?)");
+    expectError(e, 15, 10, "motor.law", "unknown value 'klos' (expected one of kloss, linear, catalogue, table, kloss_modified) (did you mean 'kloss'?)");
 }
 
 TEST(ModelFileErrors, UnknownIntegratorSuggestsTheNearestName) {

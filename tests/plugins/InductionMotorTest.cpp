@@ -428,7 +428,7 @@ TEST(InductionMotorRegistryTest, SchemaListsTheDocumentedKeys) {
                                            "resistance_ratios", "initial_voltage", "initial_frequency",
                                            "initial_resistance_ratio", "ramp_time", "torque_limit",
                                            "switch_off_time"}));
-    EXPECT_EQ(schema.find("law")->choices, (std::vector<std::string>{"kloss", "linear", "catalogue", "table"}));
+    EXPECT_EQ(schema.find("law")->choices, (std::vector<std::string>{"kloss", "linear", "catalogue", "table", "kloss_modified"}));
     EXPECT_EQ(schema.find("starter")->defaultText, "direct_on_line");
     EXPECT_EQ(schema.find("law")->defaultText, "kloss");
     EXPECT_EQ(schema.find("breakdown_ratio")->defaultValue, 2.2);

@@ -3,6 +3,8 @@
 // (models/start_bench_*.yaml: one shaft, one motor, a constant load):
 //  start_constant_torque   speed against time under constant torques: t = J·ω/(M − Mc)
 //  start_kloss_time        DOL Kloss start of an inertia: time to each slip, closed form
+//  start_kloss_modified_time DOL start of an inertia on the modified Kloss law
+//                          (stated starting torque): time to each slip, closed form
 //  start_kloss_steady_slip steady slip under a constant load on the Kloss curve
 //  start_rotor_heat        rotor heat of a DOL start of an inertia: J·(ωc·ω_e − ω_e²/2) → ½·J·ωc²
 //  start_star_delta_ratio  torque in star over the Kloss torque at the same speed: 1/3
@@ -158,6 +160,31 @@ void klossCases(const std::string& filter, std::vector<ValidationRow>& rows) {
     }
 }
 
+void klossModifiedCase(std::vector<ValidationRow>& rows) {
+    ModelSpec spec;
+    const AnalysisResult r = runModelFile(model("kloss_modified"), {}, &spec);
+    const ElementSpec& m = *spec.findElement("motor");
+    const double wc = m.number("synchronous_speed"), lambda = m.number("breakdown_ratio");
+    const double Mk = lambda * m.number("rated_torque"), J = spec.findBody("shaft")->inertia;
+    double sk = 0, a = 0;
+    if (!oc::modifiedKlossFit((wc - m.number("rated_speed")) / wc, lambda, m.number("locked_rotor_ratio"), sk, a))
+        throw std::runtime_error("start_kloss_modified_time: the oracle finds no modified Kloss curve for the bench");
+    const Worst w = worstSample(r, 1, [&](std::size_t i) {
+        const double t = r.value(i, "time"), slip = (wc - r.value(i, "shaft.speed")) / wc;
+        Sample s{t, oc::modifiedKlossInertiaStartTime(J, wc, Mk, sk, a, slip), t};
+        s.stop = slip < 0.05;  // near synchronous the time per slip grows without bound
+        return s;
+    });
+    rows.push_back(worstRow("start_kloss_modified_time", "time to each sampled slip >= 0.05 (worst sample)", "s", w,
+                            kIntegratedTolerance,
+                            "t = J·ωc/(2Mk(1 + q))·[(1 − s²)/(2sk) + sk·ln(1/s) + 2q(1 − s)], q = a·sk, "
+                            "sk and a solved by the oracle"));
+    rows.push_back(compareRow("start_kloss_modified_time", "starting torque (first sample, at rest)", "N*m",
+                              r.value(0, "motor.torque"), m.number("locked_rotor_ratio") * m.number("rated_torque"),
+                              kPointTolerance, "the stated locked_rotor_ratio times rated torque"));
+    balanceRow("kloss_modified", r, rows);
+}
+
 /// Largest deviation over the samples before `until` of motor.torque over
 /// the oracle's Kloss torque at the sample's speed from `expected(t)`.
 void ratioCase(const std::string& caseName, const std::string& quantity, const std::string& file, double until,
@@ -243,6 +270,7 @@ std::vector<ValidationRow> startCases(const std::string& filter) {
     auto wanted = [&](const std::string& name) { return filter.empty() || name.find(filter) != std::string::npos; };
     if (wanted("start_constant_torque") || wanted("start_energy_balance_constant_torque")) constantTorqueCase(rows);
     klossCases(filter, rows);
+    if (wanted("start_kloss_modified_time") || wanted("start_energy_balance_kloss_modified")) klossModifiedCase(rows);
     if (wanted("start_star_delta_ratio") || wanted("start_energy_balance_star_delta"))
         ratioCase("start_star_delta_ratio", "torque in star over the Kloss torque (worst sample before the switch)",
                   "star_delta", 2.0, [](double) { return oc::starDeltaTorqueRatio(); }, "(1/√3)² = 1/3", rows);

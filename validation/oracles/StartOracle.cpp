@@ -1,5 +1,6 @@
 #include "validation/oracles/StartOracle.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace milldyn::oracles {
@@ -18,6 +19,39 @@ double klossSteadySlip(double Mc, double Mk, double sk) {
 double klossInertiaStartTime(double J, double wc, double Mk, double sk, double se) {
     // J·ωc·ds/dt = −M(s) ⇒ dt = J·ωc/(2·Mk)·(s/sk + sk/s)·(−ds), integrated from 1 to se.
     return J * wc / (2 * Mk) * ((1 - se * se) / (2 * sk) + sk * std::log(1 / se));
+}
+
+double modifiedKlossTorque(double s, double Mk, double sk, double a) {
+    return Mk * 2 * (1 + a * sk) / (s / sk + sk / s + 2 * a * sk);
+}
+
+bool modifiedKlossFit(double sn, double lambda, double mu, double& sk, double& a) {
+    if (!(mu < lambda) || !(lambda > 1) || !(sn > 0 && sn < 1)) return false;
+    auto q = [&](double x) { return (mu * (x + 1 / x) - 2 * lambda) / (2 * (lambda - mu)); };
+    auto residual = [&](double x) { return sn / x + x / sn - 2 * lambda - 2 * (lambda - 1) * q(x); };
+    double lo = sn * (lambda + std::sqrt(lambda * lambda - 1)), hi = 1.0;
+    if (!(lo < hi)) return false;
+    const double rLo = residual(lo), rHi = residual(hi);
+    if (rLo == 0) {
+        hi = lo;
+    } else {
+        if (rLo * rHi > 0) return false;
+        for (int i = 0; i < 300; ++i) {
+            const double mid = 0.5 * (lo + hi);
+            if (mid <= lo || mid >= hi) break;
+            ((residual(mid) > 0) == (rLo > 0) ? lo : hi) = mid;
+        }
+    }
+    sk = 0.5 * (lo + hi);
+    const double qs = q(sk);
+    if (!(qs > -1e-9 && qs < 1)) return false;
+    a = std::max(0.0, qs) / sk;
+    return true;
+}
+
+double modifiedKlossInertiaStartTime(double J, double wc, double Mk, double sk, double a, double se) {
+    const double q = a * sk;
+    return J * wc / (2 * Mk * (1 + q)) * ((1 - se * se) / (2 * sk) + sk * std::log(1 / se) + 2 * q * (1 - se));
 }
 
 double starDeltaTorqueRatio() {

@@ -28,6 +28,24 @@ double klossSteadySlip(double loadTorque, double breakdownTorque, double breakdo
 double klossInertiaStartTime(double J, double synchronousSpeed, double breakdownTorque, double breakdownSlip,
                              double endSlip);
 
+/// The modified Kloss torque with the stator-resistance term (Chilikin,
+/// "Electric drive", ch. 3; Kopylov, "Electrical machines"):
+/// M = Mk·2(1 + a·sk)/(s/sk + sk/s + 2a·sk) [N*m], a = R1/R2'.
+double modifiedKlossTorque(double slip, double breakdownTorque, double breakdownSlip, double asymmetry);
+/// sk and a of the modified Kloss law through M(sn) = Mn and M(1) = μ·Mn
+/// with maximum Mk = λ·Mn, solved by eliminating q = a·sk with the s = 1
+/// equation, q(sk) = (μ·(sk + 1/sk) − 2λ)/(2(λ − μ)), and bisecting the
+/// rated-point residual sn/sk + sk/sn − 2λ − 2(λ − 1)·q(sk) in sk between
+/// the q = 0 root sn·(λ + √(λ² − 1)) and 1. Returns false when no root with
+/// 0 <= q < 1 lies there.
+bool modifiedKlossFit(double ratedSlip, double breakdownRatio, double startingRatio, double& breakdownSlip,
+                      double& asymmetry);
+/// Time for a DOL modified Kloss start of a pure inertia J from rest (s = 1)
+/// to slip s_e, J·ωc·ds/dt = −M(s) integrated in closed form:
+/// t = J·ωc/(2·Mk·(1 + q))·[(1 − s_e²)/(2·sk) + sk·ln(1/s_e) + 2q·(1 − s_e)] [s].
+double modifiedKlossInertiaStartTime(double J, double synchronousSpeed, double breakdownTorque, double breakdownSlip,
+                                     double asymmetry, double endSlip);
+
 /// Torque ratio of a star start to the delta connection: (1/√3)² = 1/3.
 double starDeltaTorqueRatio();
 /// Torque ratio of a reduced voltage v = V/V_rated at constant frequency: v².
