@@ -13,6 +13,11 @@
 #include <vector>
 
 namespace milldyn {
+
+namespace {
+/// |energy_balance_relative| above which a transient is refused as diverged.
+constexpr double kEnergyBalanceLimit = 1e-2;
+}  // namespace
 namespace {
 
 std::string probeNames(const Scene& scene, ProbeRole role) {
@@ -263,6 +268,19 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     }
 
     addEnergyBalance(*scene, first, last, result);
+    // A balance that misses by more than 1 % of the run's largest energy is
+    // no result: the integration diverged or stepped too coarsely, even when
+    // every sample stayed finite (a run-out stop can end the run first).
+    const ResultScalar* balance = result.find("energy_balance_relative");
+    if (balance && std::abs(balance->value) > kEnergyBalanceLimit) {
+        std::ostringstream why;
+        why << "transient: the energy balance does not close at t = " << last.getTime() << " s (residual "
+            << balance->value << " of the run's largest energy, limit " << kEnergyBalanceLimit << "; integrator "
+            << spec.integrator.name << ", accuracy " << spec.integrator.accuracy;
+        if (spec.integrator.maxStep > 0) why << ", max_step " << spec.integrator.maxStep << " s";
+        why << "): the integration diverged or is too coarse; tighten integrator.accuracy or max_step";
+        throw AnalysisError(why.str());
+    }
     addDefaultPlots(result);
     return result;
 }

@@ -54,5 +54,27 @@ TEST(DivergenceTest, TheSameModelIsStableWithAnErrorControlledIntegrator) {
         for (double v : row) EXPECT_TRUE(std::isfinite(v));
 }
 
+// The burr demo on fixed-step semi-explicit Euler at 50 ms (the belt mode's
+// ω·h ≈ 9, beyond the stability limit 2): the run-out stop ended the run
+// before any sample overflowed, and it printed steady_speed −2e153 rad/s with
+// exit 0. A run whose energy balance misses by more than 1 % is refused.
+TEST(DivergenceTest, ARunWhoseEnergyBalanceDoesNotCloseIsNoResult) {
+    const ModelSpec spec = readModelFile(std::string(MILLDYN_SOURCE_DIR) + "/models/burr_mill_5p5kW_idle.yaml",
+                                         defaultModelReader(),
+                                         {{"integrator.name", "SemiExplicitEuler"},
+                                          {"integrator.max_step", "50 ms"},
+                                          {"outputs.plots", "false"}});
+    try {
+        const AnalysisResult r = runAnalysis(spec);
+        const ResultScalar* speed = r.find("steady_speed");
+        FAIL() << "a diverged run gave results, steady_speed " << (speed ? speed->value : 0.0);
+    } catch (const AnalysisError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("energy balance does not close"), std::string::npos) << what;
+        EXPECT_NE(what.find("SemiExplicitEuler"), std::string::npos) << what;
+        EXPECT_NE(what.find("t = "), std::string::npos) << what;
+    }
+}
+
 }  // namespace
 }  // namespace milldyn
