@@ -241,6 +241,8 @@ PYBIND11_MODULE(_milldyn, m) {
         py::list outputs;
         for (const auto& o : i.outputs) outputs.append(py::make_tuple(o.name, o.unit));
         d["outputs"] = outputs;
+        d["warnings"] = i.warnings;  // as `milldyn info` prints them (a model without gravity, ...)
+        d["notes"] = i.notes;        // what the reader did (an analysis switched by set, keys dropped)
         return d;
     });
 

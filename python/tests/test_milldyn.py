@@ -151,6 +151,10 @@ def test_info_is_what_the_cli_shows():
     assert "time integration: " + info["time_integration"] in r.stdout
     assert "outputs: " + " ".join("%s[%s]" % o for o in info["outputs"]) in r.stdout
     assert [b["name"] for b in info["body_list"]] == ["motor_shaft", "millstone"]
+    assert info["warnings"] == [] and info["notes"] == []
+    # A reader note, as the CLI prints it: switching the analysis drops the keys it does not take.
+    switched = milldyn.Model(IDLE, set={"scenario.analysis": "linearize"}).info()
+    assert switched["notes"] and "note: " + switched["notes"][0] in cli("info", IDLE, "--set", "scenario.analysis=linearize").stdout
 
 
 def _run_into(results, key, overrides, token=None):
