@@ -22,19 +22,20 @@ struct UnitDef {
     Dimension dim;
 };
 
-// Dimension shorthands {kg, m, s, rad}.
-constexpr Dimension kNone{0, 0, 0, 0};
-constexpr Dimension kMass{1, 0, 0, 0};
-constexpr Dimension kLength{0, 1, 0, 0};
-constexpr Dimension kTime{0, 0, 1, 0};
-constexpr Dimension kAngle{0, 0, 0, 1};
-constexpr Dimension kAngularSpeed{0, 0, -1, 1};
-constexpr Dimension kFrequency{0, 0, -1, 0};
-constexpr Dimension kForce{1, 1, -2, 0};
-constexpr Dimension kPressure{1, -1, -2, 0};
-constexpr Dimension kPower{1, 2, -3, 0};
-constexpr Dimension kEnergy{1, 2, -2, 0};
-constexpr Dimension kVolume{0, 3, 0, 0};
+// Dimension shorthands {kg, m, s, rad, A}.
+constexpr Dimension kNone{0, 0, 0, 0, 0};
+constexpr Dimension kMass{1, 0, 0, 0, 0};
+constexpr Dimension kLength{0, 1, 0, 0, 0};
+constexpr Dimension kTime{0, 0, 1, 0, 0};
+constexpr Dimension kAngle{0, 0, 0, 1, 0};
+constexpr Dimension kAngularSpeed{0, 0, -1, 1, 0};
+constexpr Dimension kFrequency{0, 0, -1, 0, 0};
+constexpr Dimension kForce{1, 1, -2, 0, 0};
+constexpr Dimension kPressure{1, -1, -2, 0, 0};
+constexpr Dimension kPower{1, 2, -3, 0, 0};
+constexpr Dimension kEnergy{1, 2, -2, 0, 0};
+constexpr Dimension kVolume{0, 3, 0, 0, 0};
+constexpr Dimension kCurrent{0, 0, 0, 0, 1};
 
 const UnitDef kUnits[] = {
     {"kg", 1.0, kMass},
@@ -68,6 +69,8 @@ const UnitDef kUnits[] = {
     {"kJ", 1e3, kEnergy},
     {"L", 1e-3, kVolume},
     {"%", 0.01, kNone},
+    {"A", 1.0, kCurrent},
+    {"kA", 1e3, kCurrent},
 };
 
 // Common spellings that are not units here, with the unit to suggest.
@@ -168,10 +171,10 @@ struct Term {
 
 // acc *= t^power, with overflow and range checks.
 void combine(Term& acc, const Term& t, int power, std::size_t column) {
-    const long long exps[4][2] = {{acc.dim.kg, t.dim.kg}, {acc.dim.m, t.dim.m}, {acc.dim.s, t.dim.s},
-                                  {acc.dim.rad, t.dim.rad}};
-    int out[4];
-    for (int i = 0; i < 4; ++i) {
+    const long long exps[5][2] = {{acc.dim.kg, t.dim.kg}, {acc.dim.m, t.dim.m}, {acc.dim.s, t.dim.s},
+                                  {acc.dim.rad, t.dim.rad}, {acc.dim.A, t.dim.A}};
+    int out[5];
+    for (int i = 0; i < 5; ++i) {
         const long long e = exps[i][0] + exps[i][1] * power;
         if (e > kMaxDimensionExponent || e < -kMaxDimensionExponent) {
             throw UnitError("unit exponent too large (at most " + std::to_string(kMaxDimensionExponent) +
@@ -185,7 +188,7 @@ void combine(Term& acc, const Term& t, int power, std::size_t column) {
         throw UnitError("unit scale factor out of range", column);
     }
     acc.scale = scale;
-    acc.dim = Dimension{out[0], out[1], out[2], out[3]};
+    acc.dim = Dimension{out[0], out[1], out[2], out[3], out[4]};
 }
 
 // Recursive-descent parser over text[pos, end); columns are offsets in text.
@@ -468,13 +471,13 @@ double applyScale(const ParsedValue& v) {
 // ---------------------------------------------------------------------------
 
 bool Dimension::operator==(const Dimension& o) const {
-    return kg == o.kg && m == o.m && s == o.s && rad == o.rad;
+    return kg == o.kg && m == o.m && s == o.s && rad == o.rad && A == o.A;
 }
 
 bool Dimension::operator!=(const Dimension& o) const { return !(*this == o); }
 
 std::string Dimension::toString() const {
-    const std::pair<const char*, int> parts[4] = {{"kg", kg}, {"m", m}, {"s", s}, {"rad", rad}};
+    const std::pair<const char*, int> parts[5] = {{"kg", kg}, {"m", m}, {"s", s}, {"rad", rad}, {"A", A}};
     std::string num, den;
     for (const auto& [name, e] : parts) {
         if (e > 0) {

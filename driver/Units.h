@@ -59,12 +59,12 @@ inline constexpr int kMaxDimensionExponent = 32;
 
 // Exponents of the base dimensions kg, m, s, rad.
 struct Dimension {
-    int kg = 0, m = 0, s = 0, rad = 0;
+    int kg = 0, m = 0, s = 0, rad = 0, A = 0;  // A: electric current (motor currents)
 
     bool operator==(const Dimension& other) const;
     bool operator!=(const Dimension& other) const;
 
-    // Canonical text: positive exponents first in the order kg, m, s, rad,
+    // Canonical text: positive exponents first in the order kg, m, s, rad, A,
     // then each negative one as "/name^n", e.g. "kg*m^2/s^2/rad", "rad/s",
     // "1/s"; "1" for dimensionless. parseUnit(d.toString()) == d.
     std::string toString() const;

@@ -18,6 +18,32 @@ InductionMotor::InductionMotor(const SimTK::GeneralForceSubsystem& forces,
     : m_forces(forces), m_shaft(shaft), m_params(p), m_curve(p), m_starter(p.starter) {
     if (std::isnan(p.switchOffTime))
         throw std::invalid_argument("InductionMotor: switch_off_time is NaN");
+    if (isConverter()) m_holdSlipSpeed = calcHoldSlipSpeed(m_curve, p.starter.torqueLimit);
+}
+
+double calcHoldSlipSpeed(const TorqueSpeedCurve& curve, double torqueLimit) {
+    using Law = TorqueSpeedCurveParams::Law;
+    const TorqueSpeedCurveParams& p = curve.params();
+    const double wc = p.synchronousSpeed;
+    // The stable branch runs from synchronous speed to the breakdown point.
+    double slipSpeedBreakdown = wc;  // linear law: torque rises with slip all the way
+    if (p.law == Law::Kloss || p.law == Law::KlossModified) {
+        slipSpeedBreakdown = curve.breakdownSlip() * wc;
+    } else if (!curve.pointSpeeds().empty()) {
+        const auto& T = curve.pointTorques();
+        const auto k = static_cast<std::size_t>(std::max_element(T.begin(), T.end()) - T.begin());
+        slipSpeedBreakdown = wc - curve.pointSpeeds()[k];
+    }
+    auto torqueAt = [&](double slipSpeed) { return curve.torque(wc - slipSpeed); };
+    if (!(torqueAt(slipSpeedBreakdown) > torqueLimit)) return slipSpeedBreakdown;
+    if (!(torqueAt(0) < torqueLimit)) return 0;
+    double lo = 0, hi = slipSpeedBreakdown;  // torque(lo) < limit < torque(hi)
+    for (int i = 0; i < 200; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        (torqueAt(mid) < torqueLimit ? lo : hi) = mid;
+    }
+    return lo;
 }
 
 double InductionMotor::torqueAtSpeed(double omega, const SupplyState& u) const {
@@ -34,7 +60,44 @@ double InductionMotor::currentAtSpeed(double omega, const SupplyState& u) const 
 }
 
 SupplyState InductionMotor::supply(const SimTK::State& state) const {
-    return m_starter.supply(state.getTime(), getStarterStep(state));
+    SupplyState u = m_starter.supply(state.getTime(), getStarterStep(state));
+    if (isConverter()) u.frequency = converterFrequency(state);
+    return u;
+}
+
+double InductionMotor::converterFrequency(const SimTK::State& state) const {
+    const SimTK::Vec3& r = SimTK::Value<SimTK::Vec3>::downcast(m_forces.getDiscreteVariable(state, m_rampIndex));
+    const double wc = m_params.synchronousSpeed;
+    const double fLimit = (m_shaft.getOneU(state, SimTK::MobilizerUIndex(0)) + m_holdSlipSpeed) / wc;
+    const double fRamp = r[0] > 0.5 ? 1.0 : m_starter.rampFrequency(state.getTime(), r[1], r[2]);
+    return std::max(0.0, std::min(fRamp, fLimit));
+}
+
+bool InductionMotor::isRampHeld(const SimTK::State& state) const {
+    if (!isConverter()) return false;
+    const SimTK::Vec3& r = SimTK::Value<SimTK::Vec3>::downcast(m_forces.getDiscreteVariable(state, m_rampIndex));
+    return r[0] > 0.5;
+}
+
+double InductionMotor::calcRampHold(const SimTK::State& state) const {
+    if (!isConverter()) return 0;
+    const SimTK::Vec3& r = SimTK::Value<SimTK::Vec3>::downcast(m_forces.getDiscreteVariable(state, m_rampIndex));
+    const double wc = m_params.synchronousSpeed;
+    const double fLimit = (m_shaft.getOneU(state, SimTK::MobilizerUIndex(0)) + m_holdSlipSpeed) / wc;
+    if (r[0] > 0.5) {
+        const bool keepsUp = m_shaft.getOneUDot(state, SimTK::MobilizerUIndex(0)) >= m_starter.rampRate() * wc;
+        return keepsUp || fLimit >= 1 ? 0.0 : 1.0;
+    }
+    return m_starter.rampFrequency(state.getTime(), r[1], r[2]) > fLimit ? 1.0 : 0.0;
+}
+
+double InductionMotor::setRampHold(SimTK::State& state, double held) const {
+    if (!isConverter() || (held > 0.5) == isRampHeld(state)) return 0;
+    // A release restarts the ramp from the frequency the hold has reached.
+    const double f = converterFrequency(state);
+    SimTK::Value<SimTK::Vec3>::updDowncast(m_forces.updDiscreteVariable(state, m_rampIndex)) =
+        held > 0.5 ? SimTK::Vec3(1, f, state.getTime()) : SimTK::Vec3(0, f, state.getTime());
+    return 1;
 }
 
 double InductionMotor::calcSlipSpeed(const SimTK::State& state) const {
@@ -78,6 +141,8 @@ void InductionMotor::realizeTopology(SimTK::State& state) const {
     m_onIndex = m_forces.allocateDiscreteVariable(state, SimTK::Stage::Dynamics,
                                                   new SimTK::Value<bool>(true));
     m_stepIndex = m_forces.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<int>(0));
+    m_rampIndex = m_forces.allocateDiscreteVariable(
+        state, SimTK::Stage::Dynamics, new SimTK::Value<SimTK::Vec3>(SimTK::Vec3(0, m_params.starter.initialFrequency, 0)));
 }
 
 namespace {
@@ -161,6 +226,24 @@ void crossCheckInductionMotor(const ElementSpec& e) {
     rejectKeysOfOthers(e, "law", kLawKeys);
     rejectKeysOfOthers(e, "starter", kStarterKeys);
     const std::string law = e.text("law");
+    const std::vector<std::string> currentKeys = {"rated_current", "rated_power_factor", "locked_rotor_current_ratio"};
+    for (const auto& k : currentKeys) {
+        if (!e.has(k)) continue;
+        if (law == "table") throw e.error(k, "not used with law table (its currents are curve_currents)");
+        for (const auto& other : currentKeys)
+            if (!e.has(other))
+                throw e.error(k, "the circle diagram of the current needs rated_current, rated_power_factor and "
+                                 "locked_rotor_current_ratio together (" + other + " is missing)");
+    }
+    if (e.has("locked_rotor_current_ratio")) {
+        try {
+            CurrentCircle({(e.number("synchronous_speed") - e.number("rated_speed")) / e.number("synchronous_speed"),
+                           e.number("rated_current"), e.number("rated_power_factor"),
+                           e.number("locked_rotor_current_ratio")});
+        } catch (const std::invalid_argument& x) {
+            throw e.error("locked_rotor_current_ratio", x.what());
+        }
+    }
     if (law == "catalogue") {
         if (!e.has("locked_rotor_ratio")) throw e.error("law", "the catalogue law needs locked_rotor_ratio");
         const double lambda = e.number("breakdown_ratio");
@@ -253,6 +336,9 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     p.tableSpeeds = spec.numbers("curve_speeds");
     p.tableTorques = spec.numbers("curve_torques");
     p.tableCurrents = spec.numbers("curve_currents");
+    p.ratedCurrent = spec.number("rated_current");
+    p.ratedPowerFactor = spec.number("rated_power_factor");
+    p.lockedRotorCurrentRatio = spec.number("locked_rotor_current_ratio");
     p.switchOffTime = spec.number("switch_off_time");
     StarterParams& st = p.starter;
     st.kind = starterOf(spec.text("starter"));
@@ -298,6 +384,19 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
                                   return std::abs(v - old);
                               }});
     }
+    if (st.kind == StarterKind::FrequencyConverter) {
+        // The ramp's hold at the torque limit, decided after each accepted step.
+        scene.addLaggedValue({spec.name + ".converter_hold", true,
+                              [impl](const SimTK::State& s) { return impl->calcRampHold(s); },
+                              [impl](SimTK::State& s, double v) { return impl->setRampHold(s, v); }});
+        scene.addProbe({spec.name + ".frequency", "1", ProbeRole::Generic, SimTK::Stage::Velocity,
+                        [impl](const SimTK::State& s) { return impl->supply(s).frequency; }});
+        const double wc = p.synchronousSpeed;
+        scene.addDerivedValue({spec.name + ".hold_slip", impl->holdSlipSpeed() / wc, "1",
+                               "converter: slip at which the ramp holds, natural torque = min(torque_limit, breakdown)"});
+        scene.addDerivedValue({spec.name + ".hold_torque", impl->torqueAtSpeed(wc - impl->holdSlipSpeed()), "N*m",
+                               "converter: the torque the ramp holds at"});
+    }
     // Slightly below synchronous: where every motor law has its stable branch.
     scene.addSpeedHint(shaft->name, p.ratedSpeed);
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::DriveTorque, SimTK::Stage::Dynamics,
@@ -309,6 +408,20 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     if (impl->curve().hasCurrent())
         scene.addProbe({spec.name + ".current", "A", ProbeRole::Generic, SimTK::Stage::Dynamics,
                         [impl](const SimTK::State& s) { return impl->calcCurrent(s); }});
+    else
+        scene.note("output " + spec.name + ".current",
+                   "not available: the motor's data give no current (rated_current, rated_power_factor and "
+                   "locked_rotor_current_ratio, or a table's curve_currents)");
+    if (const auto& circle = impl->curve().currentCircle()) {
+        scene.addDerivedValue({spec.name + ".no_load_current", circle->magnetisingCurrent(), "A",
+                               "circle diagram: magnetising current Iμ (current at s = 0)"});
+        scene.addDerivedValue({spec.name + ".circle_slip", circle->circleSlip(), "1",
+                               "circle diagram: s_c = R2'/X_k fitted to I_N, cos φ_N, I_LR"});
+        scene.addDerivedValue({spec.name + ".locked_rotor_power_factor", circle->lockedRotorPowerFactor(), "1",
+                               "circle diagram: power factor at standstill"});
+        scene.addDerivedValue({spec.name + ".circle_locked_rotor_torque_ratio", circle->calcLockedRotorTorqueRatio(), "1",
+                               "circle diagram's own M(1)/Mn (constant R2'); the torque law's is locked_rotor_ratio"});
+    }
     const double wc = p.synchronousSpeed;
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source,
                          [impl, wc](const SimTK::State& s) {
@@ -380,6 +493,14 @@ void registerInductionMotor(ElementRegistry& registry) {
         P::quantityList("curve_speeds", "rad/s", 2, 200, "table: speeds, strictly increasing").optional(0.0).atLeast(0),
         P::quantityList("curve_torques", "N*m", 2, 200, "table: torques at curve_speeds").optional(0.0),
         P::quantityList("curve_currents", "A", 2, 200, "table: line currents at curve_speeds").optional(0.0).atLeast(0),
+        P::quantity("rated_current", "A", "not table: nameplate line current I_N (current by the circle diagram)")
+            .optional(0.0)
+            .above(0),
+        P::quantity("rated_power_factor", "1", "not table: nameplate power factor cos φ_N").optional(0.0).above(0).below(1),
+        P::quantity("locked_rotor_current_ratio", "1", "not table: locked-rotor over rated current I_LR/I_N")
+            .optional(0.0)
+            .above(1)
+            .atMost(20),
         P::choice("starter", starters, "how the motor is started").optional("direct_on_line"),
         P::quantityList("switch_times", "s", 1, 20, "star_delta, rotor_resistance: switching times").optional(0.0).above(0),
         P::quantityList("switch_speeds", "rad/s", 1, 20, "star_delta, rotor_resistance: switching shaft speeds")

@@ -19,6 +19,11 @@ struct InductionMotorParams : TorqueSpeedCurveParams {
     double switchOffTime = std::numeric_limits<double>::infinity();
 };
 
+/// Frequency converter: the slip speed [rad/s] at which `curve`'s natural
+/// torque reaches min(torqueLimit [N*m], its breakdown torque) on the
+/// stable branch (between synchronous speed and breakdown), by bisection.
+double calcHoldSlipSpeed(const TorqueSpeedCurve& curve, double torqueLimit);
+
 /**
  * Drive torque of an induction motor on one pin-jointed shaft: a natural
  * torque–speed law (TorqueSpeedCurve: linear, Kloss, catalogue points or a
@@ -49,6 +54,28 @@ struct InductionMotorParams : TorqueSpeedCurveParams {
  * at a speed (a kept value refreshed after each accepted step: the switch
  * lands at the end of the first step past the speed, and the integrator
  * restarts there).
+ *
+ * Frequency converter, torque limit (ramp hold): the converter never lets
+ * the slip speed exceed Δω_h, the slip speed at which the natural torque
+ * reaches min(M_lim, M_max) on the stable branch (M_max the curve's
+ * breakdown torque; without a torque_limit the hold is at breakdown), and
+ * its ramp generator pauses while it is so limited:
+ * <pre>
+ *   f_lim(ω) = (ω + Δω_h)/ωc                       (slip speed Δω_h: torque M_lim)
+ *   ramping:  f = max(0, min(f_r + R·(t − t_r), 1, f_lim(ω))),  R = (1 − f0)/T
+ *   held:     f = max(0, min(1, f_lim(ω)))          (the ramp paused; f follows the rotor)
+ *   hold      when ramping and f_r + R·(t − t_r) > f_lim(ω)   (the ramp ran into the limit)
+ *   release   when held and dω/dt >= R·ωc (the rotor would keep up with the
+ *             ramp) or f_lim(ω) >= 1; the ramp restarts from the present
+ *             frequency: f_r = f, t_r = t
+ * </pre>
+ * (f_r, t_r) = (f0, 0) at switch-on. Hold and release are a discrete state
+ * checked after every accepted step (a Scene lagged value); f is
+ * continuous across both, so the integrator restarts without a jump.
+ * While held the slip speed is Δω_h and the torque exactly M_lim: a drive
+ * at its torque limit accelerates an inertia J against a load Mc at
+ * (M_lim − Mc)/J, and its slip never exceeds the breakdown slip (checked
+ * by the validation case start_converter_torque_limit).
  *
  * The shaft gets +M as a mobility force about its pin axis; the reaction on
  * the stator (ground) is not modelled. The linear branch reaches ≈ 28·Mn at
@@ -81,6 +108,16 @@ public:
     void setOn(SimTK::State& state, bool on) const;
     int getStarterStep(const SimTK::State& state) const;
     void setStarterStep(SimTK::State& state, int step) const;
+    /// Frequency converter: slip speed Δω_h the ramp holds at [rad/s].
+    double holdSlipSpeed() const { return m_holdSlipSpeed; }
+    /// Frequency converter: whether the ramp is held at the torque limit.
+    bool isRampHeld(const SimTK::State& state) const;
+    /// Frequency converter: the hold state (1 held, 0 ramping) the state
+    /// (realized to Acceleration) asks for, by the rules above.
+    double calcRampHold(const SimTK::State& state) const;
+    /// Frequency converter: sets the hold state; a release restarts the
+    /// ramp from the present frequency. Returns 1 if it changed, else 0.
+    double setRampHold(SimTK::State& state, double held) const;
 
     /// Linear-law coefficients in use: M00 [N*m], b0 [N*m*s/rad].
     double linearStallTorque() const { return m_curve.linearStallTorque(); }
@@ -101,9 +138,13 @@ private:
     InductionMotorParams m_params;
     TorqueSpeedCurve m_curve;
     Starter m_starter;
+    double m_holdSlipSpeed = 0;
+    bool isConverter() const { return m_params.starter.kind == StarterParams::Kind::FrequencyConverter; }
+    double converterFrequency(const SimTK::State& state) const;
     // Allocated once per system in realizeTopology().
     mutable SimTK::DiscreteVariableIndex m_onIndex;
     mutable SimTK::DiscreteVariableIndex m_stepIndex;
+    mutable SimTK::DiscreteVariableIndex m_rampIndex;  // Vec3(held, f_r, t_r)
 };
 
 }  // namespace milldyn

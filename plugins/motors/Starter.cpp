@@ -78,6 +78,10 @@ SupplyState Starter::supply(double t, int step) const {
     return s;
 }
 
+double Starter::rampFrequency(double t, double from, double fromTime) const {
+    return std::min(1.0, from + rampRate() * std::max(t - fromTime, 0.0));
+}
+
 std::string Starter::kindName(StarterParams::Kind kind) {
     using K = StarterParams::Kind;
     switch (kind) {

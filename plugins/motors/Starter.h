@@ -53,6 +53,8 @@ struct SupplyState {
  *                        line current 1/3), 1 after
  *   soft start:          V(t) = V0 + (1 − V0)·min(t/T, 1)          (torque ∝ V², current ∝ V)
  *   frequency converter: f(t) = f0 + (1 − f0)·min(t/T, 1), V/f = const, |M| <= M_lim
+ *                        (the ramp alone; the InductionMotor holds it at its
+ *                        torque limit, see InductionMotor)
  *   rotor resistance:    R/R_rotor = r_i in step i, 1 after the last switch
  *   liquid resistance:   R/R_rotor = r0 + (1 − r0)·min(t/T, 1)     (electrodes lowered at a constant rate)
  * </pre>
@@ -62,6 +64,12 @@ public:
     /// Throws std::invalid_argument naming the parameter.
     explicit Starter(const StarterParams& params);
     SupplyState supply(double time, int step) const;
+    /// Frequency converter: the ramp generator's output [-] at `time` [s]
+    /// when it (re)started from `fromFrequency` at `fromTime`:
+    /// min(1, f_r + R·(t − t_r)), R = rampRate().
+    double rampFrequency(double time, double fromFrequency, double fromTime) const;
+    /// Frequency converter: the ramp's rate R = (1 − f0)/T [1/s].
+    double rampRate() const { return (1 - m_params.initialFrequency) / m_params.rampTime; }
     /// Number of switches (steps after the first).
     int switchCount() const;
     bool switchesBySpeed() const { return !m_params.switchSpeeds.empty(); }

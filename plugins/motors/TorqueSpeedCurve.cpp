@@ -191,6 +191,16 @@ TorqueSpeedCurve::TorqueSpeedCurve(const TorqueSpeedCurveParams& p) : m_params(p
         m_torque = MonotoneCubic(m_pointSpeeds, m_pointTorques);
         if (!currents.empty()) m_current = MonotoneCubic(m_pointSpeeds, currents);
     }
+    const bool anyCurrent = p.ratedCurrent != 0 || p.ratedPowerFactor != 0 || p.lockedRotorCurrentRatio != 0;
+    if (anyCurrent) {
+        if (p.law == Law::Table)
+            badParameter("rated_current", p.ratedCurrent, "the table law takes its currents from curve_currents");
+        try {
+            m_circle = CurrentCircle({m_slipRated, p.ratedCurrent, p.ratedPowerFactor, p.lockedRotorCurrentRatio});
+        } catch (const std::invalid_argument& e) {
+            badParameter("locked_rotor_current_ratio", p.lockedRotorCurrentRatio, e.what());
+        }
+    }
 }
 
 double TorqueSpeedCurve::torque(double omega) const {
@@ -218,6 +228,7 @@ double TorqueSpeedCurve::torque(double omega) const {
 }
 
 double TorqueSpeedCurve::current(double omega) const {
+    if (m_circle) return m_circle->current((m_params.synchronousSpeed - omega) / m_params.synchronousSpeed);
     return m_current.empty() ? std::nan("") : m_current(std::max(omega, 0.0));
 }
 

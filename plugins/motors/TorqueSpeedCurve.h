@@ -4,6 +4,9 @@
 // from a catalogue's points or a table, interpolated without overshoot.
 // Plain C++ (no Simbody): the InductionMotor element holds one.
 
+#include "plugins/motors/CurrentCircle.h"
+
+#include <optional>
 #include <vector>
 
 namespace milldyn {
@@ -69,6 +72,12 @@ struct TorqueSpeedCurveParams {
     std::vector<double> tableSpeeds, tableTorques;
     /// Table: stator (line) currents [A] at the same speeds (optional).
     std::vector<double> tableCurrents;
+    /// Other laws: catalogue current data for the circle diagram
+    /// (CurrentCircle): rated current I_N [A], rated power factor [-] and
+    /// locked-rotor current ratio I_LR/I_N [-]; all three, or 0 (no current).
+    double ratedCurrent = 0;
+    double ratedPowerFactor = 0;
+    double lockedRotorCurrentRatio = 0;
 };
 
 /// The modified Kloss law's two constants, solved from the nameplate.
@@ -124,8 +133,10 @@ ModifiedKlossFit fitModifiedKloss(double ratedSlip, double breakdownRatio, doubl
  * </pre>
  *
  * Below ω = 0 the catalogue and table curves hold the locked-rotor value;
- * above ωc they continue with the slope at ωc (generating). Current
- * (table law with currents only): the monotone cubic through the currents.
+ * above ωc they continue with the slope at ωc (generating). Current: the
+ * table law's monotone cubic through its currents, or, for the other laws
+ * given I_N, cos φ_N and I_LR/I_N, the circle diagram (CurrentCircle) at
+ * the slip; otherwise none (NaN).
  * The constructor throws std::invalid_argument naming the parameter.
  */
 class TorqueSpeedCurve {
@@ -136,7 +147,9 @@ public:
     double torque(double omega) const;
     /// Natural line current at shaft speed ω [A]; NaN if the data give none.
     double current(double omega) const;
-    bool hasCurrent() const { return !m_current.empty(); }
+    bool hasCurrent() const { return !m_current.empty() || m_circle.has_value(); }
+    /// The circle diagram of the current, if the data give one.
+    const std::optional<CurrentCircle>& currentCircle() const { return m_circle; }
 
     const TorqueSpeedCurveParams& params() const { return m_params; }
     double ratedSlip() const { return m_slipRated; }
@@ -155,6 +168,7 @@ private:
     double m_M00 = 0, m_b0 = 0, m_slipRated = 0, m_slipBreakdown = 0, m_asymmetry = 0;
     std::vector<double> m_pointSpeeds, m_pointTorques;
     MonotoneCubic m_torque, m_current;
+    std::optional<CurrentCircle> m_circle;
 };
 
 }  // namespace milldyn

@@ -168,18 +168,18 @@ TEST(UnitsDimension, WattHasNoAngleSoTorqueTimesAngularSpeedDiffers) {
     EXPECT_EQ(parseUnit("W"), parseUnit("N*m/s"));
     EXPECT_EQ(parseUnit("W"), parseUnit("J/s"));
     EXPECT_NE(parseUnit("W"), parseUnit("N*m*rad/s"));
-    EXPECT_EQ((Dimension{1, 2, -3, 1}), parseUnit("N*m*rad/s"));
+    EXPECT_EQ((Dimension{1, 2, -3, 1, 0}), parseUnit("N*m*rad/s"));
 }
 
 TEST(UnitsDimension, HertzIsNotAnAngularSpeed) {
-    EXPECT_EQ((Dimension{0, 0, -1, 0}), parseUnit("Hz"));
+    EXPECT_EQ((Dimension{0, 0, -1, 0, 0}), parseUnit("Hz"));
     EXPECT_NE(parseUnit("Hz"), parseUnit("rad/s"));
     EXPECT_EQ(parseUnit("rpm"), parseUnit("rad/s"));
     EXPECT_EQ(parseUnit("rpm"), parseUnit("rev/min"));
 }
 
 TEST(UnitsDimension, SlashAppliesToTheNextFactorOnly) {
-    EXPECT_EQ((Dimension{1, -1, -1, 0}), parseUnit("kg/m/s"));
+    EXPECT_EQ((Dimension{1, -1, -1, 0, 0}), parseUnit("kg/m/s"));
     EXPECT_EQ(kTorsionalDamping, parseUnit("N*m*s/rad"));
 }
 
@@ -193,8 +193,8 @@ TEST(UnitsDimension, ReciprocalFormsAgree) {
 }
 
 TEST(UnitsDimension, ParenthesesAndGroupExponents) {
-    EXPECT_EQ((Dimension{0, 2, -2, 0}), parseUnit("(m/s)^2"));
-    EXPECT_EQ((Dimension{1, 0, 1, 0}), parseUnit("kg/(1/s)"));
+    EXPECT_EQ((Dimension{0, 2, -2, 0, 0}), parseUnit("(m/s)^2"));
+    EXPECT_EQ((Dimension{1, 0, 1, 0, 0}), parseUnit("kg/(1/s)"));
     EXPECT_EQ(kInertia, parseUnit(" kg * m ^ 2 "));
     expectNearRel(1e-6, toSI("1 mm^2", "m^2"));  // (1e-3)^2
 }
@@ -206,11 +206,13 @@ TEST(UnitsDimension, ToStringIsCanonical) {
     EXPECT_EQ("1", parseUnit("%").toString());
     EXPECT_EQ("kg*m^2/s^3", parseUnit("kW").toString());
     EXPECT_EQ("kg/m/s^2", parseUnit("Pa").toString());
+    EXPECT_EQ("A", parseUnit("kA").toString());
+    EXPECT_EQ((Dimension{0, 0, 0, 0, 1}), parseUnit("A"));
 }
 
 TEST(UnitsDimension, ToStringRoundTripsForEveryKnownUnit) {
     const std::vector<std::string> names = knownUnitNames();
-    EXPECT_EQ(31u, names.size());
+    EXPECT_EQ(33u, names.size());  // A and kA: motor currents
     for (const std::string& name : names) {
         const Dimension d = parseUnit(name);
         EXPECT_EQ(d, parseUnit(d.toString())) << name << " -> " << d.toString();

@@ -424,7 +424,8 @@ TEST(InductionMotorRegistryTest, SchemaListsTheDocumentedKeys) {
                                            "linear_stall_torque", "linear_slope",
                                            "locked_rotor_ratio", "pull_up_ratio", "pull_up_speed",
                                            "breakdown_speed", "curve_speeds", "curve_torques",
-                                           "curve_currents", "starter", "switch_times", "switch_speeds",
+                                           "curve_currents", "rated_current", "rated_power_factor",
+                                           "locked_rotor_current_ratio", "starter", "switch_times", "switch_speeds",
                                            "resistance_ratios", "initial_voltage", "initial_frequency",
                                            "initial_resistance_ratio", "ramp_time", "torque_limit",
                                            "switch_off_time"}));

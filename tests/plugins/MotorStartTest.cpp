@@ -5,11 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "driver/analyses/Analysis.h"
 #include "driver/ModelFile.h"
+#include "plugins/motors/CurrentCircle.h"
 #include "plugins/motors/InductionMotor.h"
 #include "plugins/motors/Starter.h"
 #include "plugins/motors/TorqueSpeedCurve.h"
@@ -264,6 +266,138 @@ TEST(InductionMotorStarter, StarDeltaSwitchesAtASpeed) {
     EXPECT_GT(star, 10);
     EXPECT_GT(delta, 10);
     EXPECT_EQ(r.verdict, "completed") << r.verdictText;
+}
+
+
+// The converter's hold slip: where the Kloss torque reaches the limit,
+// s = sk·(Mk/M_lim − √((Mk/M_lim)² − 1)) (the stable root of Kloss = M_lim);
+// a limit above breakdown holds at the breakdown slip.
+TEST(InductionMotorConverter, HoldSlipIsWhereTheCurveReachesTheLimit) {
+    const double wc = 1500 * kRpm, sk = 0.02 * (2.5 + std::sqrt(2.5 * 2.5 - 1)), Mk = 2.5 * 97.4;
+    const TorqueSpeedCurve kl(kloss());
+    const double q = Mk / 146.1;
+    EXPECT_NEAR(calcHoldSlipSpeed(kl, 146.1) / wc, sk * (q - std::sqrt(q * q - 1)), 1e-14);
+    EXPECT_NEAR(calcHoldSlipSpeed(kl, 1e9) / wc, sk, 1e-15);
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_NEAR(calcHoldSlipSpeed(kl, inf) / wc, sk, 1e-15);
+    // Catalogue: breakdown at 1320 rpm, torque 280 N*m.
+    const TorqueSpeedCurve cat(catalogue());
+    EXPECT_NEAR(calcHoldSlipSpeed(cat, 500), (1500 - 1320) * kRpm, 1e-12);
+    const double held = calcHoldSlipSpeed(cat, 150);
+    EXPECT_NEAR(cat.torque(wc - held), 150, 1e-9);
+    EXPECT_GT(held, (1500 - 1470) * kRpm);  // beyond the rated point (100 N*m)
+    EXPECT_LT(held, (1500 - 1320) * kRpm);
+}
+
+// The ramp pauses at the limit and resumes from where it was held: a shaft
+// whose limit acceleration is below the ramp's is held (slip = hold slip),
+// and the hold state follows the rules of the class comment.
+TEST(InductionMotorConverter, RampHoldsAtTheLimitAndReleasesWhenTheRotorKeepsUp) {
+    InductionMotorParams p = kloss();
+    p.starter.kind = StarterParams::Kind::FrequencyConverter;
+    p.starter.initialFrequency = 0.1;
+    p.starter.rampTime = 1;  // R·ωc = 0.9·157.08 = 141 rad/s^2
+    p.starter.torqueLimit = 146.1;
+    Bench b(p);  // J = 1 kg*m^2: 146.1 rad/s^2 at the limit without load
+    const double wc = 1500 * kRpm, dwh = b.motor->holdSlipSpeed();
+    SimTK::State s = b.sys.defaultState();
+    test::setShaft(s, b.shaft, 0, 0);
+    b.sys.system().realize(s, SimTK::Stage::Acceleration);
+    // Ramp at 0.1 is ahead of f_lim = Δω_h/ωc = 0.032: limited, torque = M_lim.
+    EXPECT_NEAR(b.motor->supply(s).frequency, dwh / wc, 1e-15);
+    EXPECT_NEAR(b.motor->calcTorque(s), 146.1, 1e-12);
+    EXPECT_EQ(b.motor->calcRampHold(s), 1.0);
+    EXPECT_EQ(b.motor->setRampHold(s, 1.0), 1.0);
+    EXPECT_TRUE(b.motor->isRampHeld(s));
+    // Held, the rotor accelerates at 146.1 rad/s^2 >= 141 rad/s^2: it keeps up, release.
+    b.sys.system().realize(s, SimTK::Stage::Acceleration);
+    EXPECT_EQ(b.motor->calcRampHold(s), 0.0);
+    // At t = 0.5 s and 50 rad/s the release restarts the ramp from f = (50 + Δω_h)/ωc.
+    s.setTime(0.5);
+    test::setShaft(s, b.shaft, 0, 50);
+    EXPECT_EQ(b.motor->setRampHold(s, 0.0), 1.0);
+    EXPECT_FALSE(b.motor->isRampHeld(s));
+    s.setTime(0.6);
+    test::setShaft(s, b.shaft, 0, 200);  // far ahead of the ramp: f = the ramp
+    b.sys.system().realize(s, SimTK::Stage::Acceleration);
+    EXPECT_NEAR(b.motor->supply(s).frequency, (50 + dwh) / wc + 0.9 * 0.1, 1e-14);
+    EXPECT_EQ(b.motor->calcRampHold(s), 0.0);
+}
+
+CurrentCircleParams circleData() {
+    return {0.02, 28.5, 0.85, 7.0};  // IEC 15 kW 4-pole: I_N 28.5 A, cos φ 0.85, I_LR/I_N 7
+}
+
+TEST(CurrentCircle, ReproducesTheCatalogueCurrentsAndPowerFactor) {
+    const CurrentCircle c(circleData());
+    EXPECT_NEAR(c.current(0.02), 28.5, 1e-12 * 28.5);
+    EXPECT_NEAR(c.current(1.0), 7.0 * 28.5, 1e-12 * 200);
+    EXPECT_NEAR(c.current(0.0), c.magnetisingCurrent(), 1e-12);
+    // The rated point's reactive part is I_N·sin φ_N: Iμ + the rotor's
+    // reactive part, so Iμ < I_N·sin φ_N = 15.0 A.
+    EXPECT_GT(c.magnetisingCurrent(), 0.0);
+    EXPECT_LT(c.magnetisingCurrent(), 28.5 * std::sqrt(1 - 0.85 * 0.85));
+    // Current rises monotonically with slip on [0, 1] (the circle's lower half).
+    for (int i = 1; i <= 100; ++i) EXPECT_GT(c.current(i / 100.0), c.current((i - 1) / 100.0)) << i;
+    EXPECT_GT(c.lockedRotorPowerFactor(), 0.0);
+    EXPECT_LT(c.lockedRotorPowerFactor(), 0.85);
+}
+
+TEST(CurrentCircle, RejectsDataNoCircleFits) {
+    CurrentCircleParams p = circleData();
+    p.lockedRotorRatio = 0.9;  // below rated current
+    EXPECT_THROW(CurrentCircle{p}, std::invalid_argument);
+    p.lockedRotorRatio = 60;  // beyond the circle slip 1
+    EXPECT_THROW(CurrentCircle{p}, std::invalid_argument);
+    p = circleData();
+    p.ratedPowerFactor = 1.0;
+    EXPECT_THROW(CurrentCircle{p}, std::invalid_argument);
+}
+
+// Star-delta: in star the line current is a third of delta's at the same
+// speed, so it jumps ×3 at the switch; soft start scales it by V.
+TEST(InductionMotorCurrent, StarDeltaThirdsAndSoftStartScalesTheCurrent) {
+    InductionMotorParams p = kloss();
+    p.ratedCurrent = 28.5;
+    p.ratedPowerFactor = 0.85;
+    p.lockedRotorCurrentRatio = 7.0;
+    p.starter.kind = StarterParams::Kind::StarDelta;
+    p.starter.switchTimes = {1};
+    Bench b(p);
+    SimTK::State s = b.sys.defaultState();
+    test::setShaft(s, b.shaft, 0, 100);
+    b.sys.system().realize(s, SimTK::Stage::Dynamics);
+    const double star = b.motor->calcCurrent(s);
+    b.motor->setStarterStep(s, 1);
+    b.sys.system().realize(s, SimTK::Stage::Dynamics);
+    EXPECT_NEAR(b.motor->calcCurrent(s) / star, 3.0, 1e-13);
+    const CurrentCircle c(circleData());
+    EXPECT_NEAR(b.motor->calcCurrent(s), c.current((1500 * kRpm - 100) / (1500 * kRpm)), 1e-12 * 200);
+    SupplyState u;
+    u.voltage = 0.4;
+    EXPECT_NEAR(b.motor->currentAtSpeed(0, u), 0.4 * 7.0 * 28.5, 1e-12 * 200);
+}
+
+TEST(InductionMotorInput, BadConverterAndCurrentInputsGiveOneLocatedLine) {
+    const std::string limit = errorOf("    starter: frequency_converter\n    ramp_time: 5 s\n    torque_limit: 0 N*m\n");
+    EXPECT_NE(limit.find("m.yaml:16:19: error: motor.torque_limit: must be > 0"), std::string::npos) << limit;
+    const std::string ratio =
+        errorOf("    rated_current: 28.5 A\n    rated_power_factor: 0.85\n    locked_rotor_current_ratio: 0.8\n");
+    EXPECT_NE(ratio.find("m.yaml:16:33: error: motor.locked_rotor_current_ratio: must be > 1"), std::string::npos)
+        << ratio;
+    const std::string partial = errorOf("    rated_current: 28.5 A\n");
+    EXPECT_EQ(partial.rfind("m.yaml:14:", 0), 0u) << partial;
+    EXPECT_NE(partial.find("error: motor.rated_current: the circle diagram of the current needs"), std::string::npos)
+        << partial;
+    const std::string noFit =
+        errorOf("    rated_current: 28.5 A\n    rated_power_factor: 0.85\n    locked_rotor_current_ratio: 1.5\n");
+    EXPECT_NE(noFit.find("error: motor.locked_rotor_current_ratio: no circle diagram through these data"),
+              std::string::npos)
+        << noFit;
+    const std::string amps = errorOf("    rated_current: 28.5 N*m\n    rated_power_factor: 0.85\n"
+                                     "    locked_rotor_current_ratio: 7\n");
+    EXPECT_NE(amps.find("error: motor.rated_current:"), std::string::npos) << amps;
+    EXPECT_EQ(std::count(limit.begin(), limit.end(), '\n') + std::count(ratio.begin(), ratio.end(), '\n'), 0);
 }
 
 }  // namespace

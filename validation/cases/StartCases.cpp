@@ -7,11 +7,16 @@
 //                          (stated starting torque): time to each slip, closed form
 //  start_kloss_steady_slip steady slip under a constant load on the Kloss curve
 //  start_rotor_heat        rotor heat of a DOL start of an inertia: J·(ωc·ω_e − ω_e²/2) → ½·J·ωc²
-//  start_star_delta_ratio  torque in star over the Kloss torque at the same speed: 1/3
-//  start_soft_start_v2     torque over the Kloss torque at the same speed: V(t)²
+//  start_star_delta_ratio  torque and line current in star over delta's at the same speed: 1/3
+//  start_soft_start_v2     torque over the Kloss torque at the same speed: V(t)²; current: V(t)
 //  start_catalogue_points  the catalogue curve reproduced at its points
+//  start_catalogue_current the circle-diagram current: I_LR at rest, I_N at
+//                          rated slip, and along the start against the oracle's fit
 //  start_clutch_slip_heat  an air clutch's slip heat: ½·ω0²·J1·J2/(J1 + J2)
 //  start_brake_runout      speed under a ramped brake and a constant load
+//  start_converter_torque_limit a converter holding its ramp at the torque
+//                          limit: t = J·ω/(M_lim − Mc), the slip held where the
+//                          Kloss torque is M_lim, never above the breakdown slip
 //  start_energy_balance_*  every run's energy balance closes
 
 #include "driver/analyses/Analysis.h"
@@ -185,23 +190,51 @@ void klossModifiedCase(std::vector<ValidationRow>& rows) {
     balanceRow("kloss_modified", r, rows);
 }
 
+/// The circle-diagram current of the bench's motor at a slip (oracle),
+/// from the motor's catalogue current data.
+double oracleCurrent(const ElementSpec& m, double slip) {
+    const double wc = m.number("synchronous_speed");
+    return oc::circleDiagramCurrent(slip, (wc - m.number("rated_speed")) / wc, m.number("rated_current"),
+                                    m.number("rated_power_factor"), m.number("locked_rotor_current_ratio"));
+}
+
 /// Largest deviation over the samples before `until` of motor.torque over
-/// the oracle's Kloss torque at the sample's speed from `expected(t)`.
-void ratioCase(const std::string& caseName, const std::string& quantity, const std::string& file, double until,
+/// the oracle's Kloss torque at the sample's speed from `expected(t)`; and,
+/// where the motor has current data, of motor.current over the oracle's
+/// circle-diagram current from `expectedCurrent(t)`.
+void ratioCase(const std::string& caseName, const std::string& file, double until,
                const std::function<double(double)>& expected, const std::string& note,
+               const std::function<double(double)>& expectedCurrent, const std::string& currentNote,
                std::vector<ValidationRow>& rows) {
     ModelSpec spec;
     const AnalysisResult r = runModelFile(model(file), {}, &spec);
     const KlossMotor k = klossFromModel(spec);
-    const Worst w = worstSample(r, 0, [&](std::size_t i) {
-        const double t = r.value(i, "time");
-        const double slip = (k.wc - r.value(i, "shaft.speed")) / k.wc;
-        const double e = expected(t);
-        Sample s{r.value(i, "motor.torque") / oc::klossTorque(slip, k.Mk, k.sk), e, e};
-        s.stop = t >= until;
-        return s;
-    });
-    rows.push_back(worstRow(caseName, quantity, "1", w, kRatioTolerance, note));
+    const ElementSpec& m = *spec.findElement("motor");
+    auto worstRatio = [&](const std::function<double(std::size_t, double)>& ratio,
+                          const std::function<double(double)>& want) {
+        return worstSample(r, 0, [&](std::size_t i) {
+            const double t = r.value(i, "time");
+            const double slip = (k.wc - r.value(i, "shaft.speed")) / k.wc;
+            const double e = want(t);
+            Sample s{ratio(i, slip), e, e};
+            s.stop = t >= until;
+            return s;
+        });
+    };
+    rows.push_back(worstRow(caseName, "torque over the Kloss torque (worst sample before " + formatExact(until) + " s)",
+                            "1",
+                            worstRatio([&](std::size_t i, double slip) {
+                                return r.value(i, "motor.torque") / oc::klossTorque(slip, k.Mk, k.sk);
+                            }, expected),
+                            kRatioTolerance, note));
+    if (m.has("rated_current"))
+        rows.push_back(worstRow(caseName, "line current over the circle-diagram current (worst sample before " +
+                                              formatExact(until) + " s)",
+                                "1",
+                                worstRatio([&](std::size_t i, double slip) {
+                                    return r.value(i, "motor.current") / oracleCurrent(m, slip);
+                                }, expectedCurrent),
+                                kRatioTolerance, currentNote));
     balanceRow(file, r, rows);
 }
 
@@ -228,9 +261,24 @@ void catalogueCase(std::vector<ValidationRow>& rows) {
         rows.push_back(compareRow("start_catalogue_points", std::string(p.what) + " torque", "N*m",
                                   r.value(0, "motor.torque"), p.torque, kPointTolerance,
                                   "monotone cubic through the catalogue's points"));
+        const double IN = m.number("rated_current");
+        if (p.speed == 0)
+            rows.push_back(compareRow("start_catalogue_current", "locked-rotor current", "A", r.value(0, "motor.current"),
+                                      m.number("locked_rotor_current_ratio") * IN, kPointTolerance,
+                                      "the catalogue's I_LR/I_N times I_N: the circle diagram passes through it"));
+        if (p.speed == m.number("rated_speed"))
+            rows.push_back(compareRow("start_catalogue_current", "rated current", "A", r.value(0, "motor.current"), IN,
+                                      kPointTolerance, "the catalogue's I_N at rated slip"));
     }
     ModelSpec s2;
     const AnalysisResult r = runModelFile(model("catalogue"), {}, &s2);
+    const Worst w = worstSample(r, 0, [&](std::size_t i) {
+        const double wc = m.number("synchronous_speed");
+        const double I = oracleCurrent(m, (wc - r.value(i, "shaft.speed")) / wc);
+        return Sample{r.value(i, "motor.current"), I, I};
+    });
+    rows.push_back(worstRow("start_catalogue_current", "current along the start (worst sample)", "A", w, kRatioTolerance,
+                            "circle diagram through I_N, cos φ_N and I_LR, fitted by the oracle in Iμ"));
     balanceRow("catalogue", r, rows);
 }
 
@@ -263,6 +311,45 @@ void brakeCase(std::vector<ValidationRow>& rows) {
     balanceRow("brake", r, rows);
 }
 
+void converterCase(std::vector<ValidationRow>& rows) {
+    ModelSpec spec;
+    const AnalysisResult r = runModelFile(model("converter"), {}, &spec);
+    const KlossMotor k = klossFromModel(spec);
+    const double Mlim = spec.findElement("motor")->number("torque_limit");
+    const double Mc = spec.findElement("load")->number("constant_torque");
+    // The slip at which the Kloss torque is M_lim (the steady slip of a
+    // load M_lim), and the speed at which the held frequency reaches 1.
+    const double sHold = oc::klossSteadySlip(Mlim, k.Mk, k.sk);
+    const double wEnd = k.wc * (1 - sHold);
+    auto held = [&](std::size_t i) { return r.value(i, "shaft.speed") < wEnd; };
+    // As in start_constant_torque: samples from 0.1 s (the load's regularisation).
+    const Worst time = worstSample(r, 1, [&](std::size_t i) {
+        const double t = r.value(i, "time");
+        Sample s{t, oc::constantTorqueStartTime(k.J, r.value(i, "shaft.speed"), Mlim, Mc), t};
+        s.use = t >= 0.1 && held(i);
+        return s;
+    });
+    rows.push_back(worstRow("start_converter_torque_limit", "time to each sampled speed while the ramp is held (worst sample)",
+                            "s", time, kIntegratedTolerance,
+                            "t = J·ω/(M_lim − Mc): the shaft at the torque limit until 50 Hz"));
+    const Worst slip = worstSample(r, 0, [&](std::size_t i) {
+        Sample s{(r.value(i, "motor.frequency") * k.wc - r.value(i, "shaft.speed")) / k.wc, sHold, sHold};
+        s.use = held(i);
+        return s;
+    });
+    rows.push_back(worstRow("start_converter_torque_limit", "slip while the ramp is held (worst sample)", "1", slip,
+                            kRatioTolerance, "s_h = sk·(Mk/M_lim − √((Mk/M_lim)² − 1)): Kloss torque = M_lim"));
+    double largest = 0;
+    for (std::size_t i = 0; i < r.rows.size(); ++i)
+        largest = std::max(largest, (r.value(i, "motor.frequency") * k.wc - r.value(i, "shaft.speed")) / k.wc);
+    ValidationRow bound = compareRow("start_converter_torque_limit", "largest slip of the run against the breakdown slip",
+                                     "1", largest, k.sk, 0, "must not exceed sk = sn·(λ + √(λ² − 1)): the slip is bounded");
+    bound.relError = largest / k.sk;
+    bound.status = largest <= k.sk ? "pass" : "fail";
+    rows.push_back(bound);
+    balanceRow("converter", r, rows);
+}
+
 }  // namespace
 
 std::vector<ValidationRow> startCases(const std::string& filter) {
@@ -272,15 +359,19 @@ std::vector<ValidationRow> startCases(const std::string& filter) {
     klossCases(filter, rows);
     if (wanted("start_kloss_modified_time") || wanted("start_energy_balance_kloss_modified")) klossModifiedCase(rows);
     if (wanted("start_star_delta_ratio") || wanted("start_energy_balance_star_delta"))
-        ratioCase("start_star_delta_ratio", "torque in star over the Kloss torque (worst sample before the switch)",
-                  "star_delta", 2.0, [](double) { return oc::starDeltaTorqueRatio(); }, "(1/√3)² = 1/3", rows);
+        ratioCase("start_star_delta_ratio", "star_delta", 2.0, [](double) { return oc::starDeltaTorqueRatio(); },
+                  "in star: (1/√3)² = 1/3", [](double) { return oc::starDeltaCurrentRatio(); },
+                  "in star: phase current 1/√3 over a delta's line current √3: 1/3 (×3 at the switch)", rows);
     if (wanted("start_soft_start_v2") || wanted("start_energy_balance_soft_start"))
-        ratioCase("start_soft_start_v2", "torque over the Kloss torque (worst sample of the ramp)", "soft_start", 6.0,
+        ratioCase("start_soft_start_v2", "soft_start", 6.0,
                   [](double t) { return oc::reducedVoltageTorqueRatio(0.4 + 0.6 * std::min(t / 2.0, 1.0)); },
-                  "V(t)² with V = 0.4 → 1 over 2 s", rows);
-    if (wanted("start_catalogue_points") || wanted("start_energy_balance_catalogue")) catalogueCase(rows);
+                  "V(t)² with V = 0.4 → 1 over 2 s", [](double t) { return 0.4 + 0.6 * std::min(t / 2.0, 1.0); },
+                  "V(t): current ∝ voltage at a given slip", rows);
+    if (wanted("start_catalogue_points") || wanted("start_catalogue_current") || wanted("start_energy_balance_catalogue"))
+        catalogueCase(rows);
     if (wanted("start_clutch_slip_heat") || wanted("start_energy_balance_clutch")) clutchCase(rows);
     if (wanted("start_brake_runout") || wanted("start_energy_balance_brake")) brakeCase(rows);
+    if (wanted("start_converter_torque_limit") || wanted("start_energy_balance_converter")) converterCase(rows);
     return rows;
 }
 

@@ -54,6 +54,36 @@ double modifiedKlossInertiaStartTime(double J, double wc, double Mk, double sk, 
     return J * wc / (2 * Mk * (1 + q)) * ((1 - se * se) / (2 * sk) + sk * std::log(1 / se) + 2 * q * (1 - se));
 }
 
+double circleDiagramCurrent(double s, double sn, double IN, double c, double k) {
+    const double sinPhi = std::sqrt(1 - c * c);
+    // The circle through the rated point for a magnetising current m.
+    struct Circle {
+        double m, D, sc;
+    };
+    auto circle = [&](double m) {
+        const double w = sinPhi - m;
+        return Circle{m, (c * c + w * w) / w, sn * c / w};
+    };
+    auto magnitude = [](const Circle& q, double slip) {
+        if (slip == 0) return q.m;
+        const double rho = q.sc / slip;
+        return std::hypot(q.D * rho / (1 + rho * rho), q.m + q.D / (1 + rho * rho));
+    };
+    double lo = 0, hi = sinPhi - c * sn;
+    if (!(magnitude(circle(lo), 1.0) <= k && k <= magnitude(circle(hi), 1.0))) return std::nan("");
+    for (int i = 0; i < 300; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid <= lo || mid >= hi) break;
+        (magnitude(circle(mid), 1.0) < k ? lo : hi) = mid;
+    }
+    return IN * magnitude(circle(0.5 * (lo + hi)), s);
+}
+
+double starDeltaCurrentRatio() {
+    const double phaseCurrent = 1 / std::sqrt(3.0), deltaLineOverPhase = std::sqrt(3.0);
+    return phaseCurrent / deltaLineOverPhase;
+}
+
 double starDeltaTorqueRatio() {
     const double phaseVoltage = 1 / std::sqrt(3.0);
     return phaseVoltage * phaseVoltage;

@@ -46,6 +46,24 @@ bool modifiedKlossFit(double ratedSlip, double breakdownRatio, double startingRa
 double modifiedKlossInertiaStartTime(double J, double synchronousSpeed, double breakdownTorque, double breakdownSlip,
                                      double asymmetry, double endSlip);
 
+/// Line current [A] at slip s by the circle diagram (magnetising branch at
+/// the terminals, stator resistance neglected; Fitzgerald & Kingsley,
+/// "Electric Machinery"; Kostenko & Piotrovsky, "Electrical Machines")
+/// through the catalogue's rated current I_N [A] at rated slip sn with
+/// power factor c, and the locked-rotor current k·I_N at s = 1. Per unit of
+/// V and I_N the rotor current is a circle through the origin of diameter D
+/// on the −j axis, the stator current that circle shifted by −j·Iμ; a
+/// point's slip is s = s_c·(−Im I2)/Re I2. Solved here in Iμ: the rated
+/// point (c, −√(1 − c²)) on the circle gives, with w = √(1 − c²) − Iμ,
+/// D = (c² + w²)/w (a chord through the origin) and s_c/sn = c/w; the
+/// standstill point then fixes Iμ, bisected on [0, √(1 − c²) − c·sn].
+/// NaN when no Iμ there fits.
+double circleDiagramCurrent(double slip, double ratedSlip, double ratedCurrent, double powerFactor,
+                            double lockedRotorRatio);
+/// Line-current ratio of a star start to delta at the same slip: phase
+/// current 1/√3, and a delta's line current is √3 its phase current: 1/3.
+double starDeltaCurrentRatio();
+
 /// Torque ratio of a star start to the delta connection: (1/√3)² = 1/3.
 double starDeltaTorqueRatio();
 /// Torque ratio of a reduced voltage v = V/V_rated at constant frequency: v².
