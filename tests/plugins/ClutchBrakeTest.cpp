@@ -2,11 +2,16 @@
 // (plugins/brakes/Brake.h): torques by hand from the class comments.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include "driver/analyses/Analysis.h"
+#include "driver/ModelFile.h"
 #include "plugins/brakes/Brake.h"
 #include "plugins/transmissions/Clutch.h"
 #include "tests/plugins/ShaftFixture.h"
+#include "validation/cases/ValidationCases.h"
+#include "validation/oracles/TumblingMillOracle.h"
 
 namespace milldyn {
 namespace {
@@ -52,6 +57,35 @@ TEST(Brake, BrakeOpposesRotationAndBackstopHoldsOnlyBackwards) {
     EXPECT_NEAR(backstop.torqueAt(-10, 0.0), 100.0, 1e-9);
     // Creep: a held load of 76 N*m turns back at ω_reg·atanh(0.76) = 1e-3·0.9962 rad/s.
     EXPECT_NEAR(backstop.torqueAt(-1e-3 * std::atanh(0.76), 0.0), 76.0, 1e-9);
+}
+
+// The frozen-charge drum after its inching drive trips at 1 s: without a
+// backstop the charge rolls it back and it swings (the speed changes sign
+// again and again); with one it never turns back faster than the backstop's
+// creep and the backstop carries the charge's moment.
+TEST(Backstop, AFrozenChargeRollsTheDrumBackUnlessABackstopHoldsIt) {
+    const AnalysisResult free = runModelFile(modelsDirectory() + "/start_bench_rollback.yaml", {});
+    int reversals = 0;
+    double slowest = 0;
+    for (std::size_t i = 1; i < free.rows.size(); ++i) {
+        const double w0 = free.value(i - 1, "drum.speed"), w1 = free.value(i, "drum.speed");
+        if (free.value(i, "time") > 1 && (w0 > 0) != (w1 > 0)) ++reversals;
+        slowest = std::min(slowest, w1);
+    }
+    EXPECT_GE(reversals, 4);    // ~2.7 s swings over the 7 s after the trip
+    EXPECT_LT(slowest, -1.0);   // rolls back at more than 1 rad/s through the bottom
+    const AnalysisResult held = runModelFile(modelsDirectory() + "/start_bench_backstop.yaml", {});
+    double heldSlowest = 0;
+    for (std::size_t i = 0; i < held.rows.size(); ++i) heldSlowest = std::min(heldSlowest, held.value(i, "drum.speed"));
+    // Creep of the regularised backstop: 1e-5·atanh(T/60 kN*m) rad/s with T < 60 kN*m.
+    EXPECT_GT(heldSlowest, -1e-5 * std::atanh(0.5));
+    const std::size_t last = held.rows.size() - 1;
+    const double T = -held.value(last, "backstop.torque");
+    // m·g·r_c·sin α at the held angle; m, r_c of the 20 % segment (2 m x 1.5 m, 4650 kg/m^3) in closed form.
+    const oracles::CircularSegmentCharge seg{1.0, 1.5, 4650, 0.2};
+    const double W = oracles::segmentMass(seg) * 9.81 * oracles::segmentCentroidDistance(seg);
+    const double alpha = M_PI / 6 + held.value(last, "drum.angle");
+    EXPECT_NEAR(T, W * std::sin(alpha), 1e-6 * T);
 }
 
 }  // namespace

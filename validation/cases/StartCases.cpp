@@ -17,11 +17,16 @@
 //  start_converter_torque_limit a converter holding its ramp at the torque
 //                          limit: t = J·ω/(M_lim − Mc), the slip held where the
 //                          Kloss torque is M_lim, never above the breakdown slip
+//  start_backstop_rollback a frozen charge rolls the drum back after the drive
+//                          trips (no backstop): a pendulum, ±α_max, bottom speed
+//  start_backstop_holds    with a backstop the drum stops at α_max and is held
+//                          by m·g·r_c·sin α
 //  start_energy_balance_*  every run's energy balance closes
 
 #include "driver/analyses/Analysis.h"
 #include "validation/cases/ValidationCases.h"
 #include "validation/oracles/StartOracle.h"
+#include "validation/oracles/TumblingMillOracle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -350,6 +355,99 @@ void converterCase(std::vector<ValidationRow>& rows) {
     balanceRow("converter", r, rows);
 }
 
+/// The frozen-charge drum of models/parts/start_bench_frozen_charge.yaml,
+/// restated for the oracle, and its state at the drive's trip.
+struct FrozenCharge {
+    double J = 0, W = 0, alpha0 = 0;  // inertia about the axis, m·g·r_c, charge angle at t = 0
+    double tripTime = 0, alphaTrip = 0, omegaTrip = 0, alphaMax = 0;
+    std::size_t trip = 0;  // first sample at or after the trip
+};
+FrozenCharge frozenCharge(const ModelSpec& spec, const AnalysisResult& r) {
+    const ElementSpec& c = *spec.findElement("charge");
+    const oc::CircularSegmentCharge seg{c.number("drum_radius"), c.number("length"), c.number("bulk_density"),
+                                        c.number("fill")};
+    const double g = std::hypot(spec.gravity[0], spec.gravity[1]);
+    FrozenCharge f;
+    f.J = spec.findBody("drum")->inertia + oc::segmentAxisInertia(seg);
+    f.W = oc::segmentMass(seg) * g * oc::segmentCentroidDistance(seg);
+    f.alpha0 = c.number("initial_direction") + M_PI / 2;  // from the downward vertical (−y), +z sense
+    f.tripTime = spec.findElement("motor")->number("switch_off_time");
+    while (f.trip < r.rows.size() && r.value(f.trip, "time") < f.tripTime) ++f.trip;
+    if (f.trip == r.rows.size()) throw std::runtime_error("the run ends before the drive trips");
+    f.alphaTrip = f.alpha0 + r.value(f.trip, "drum.angle");
+    f.omegaTrip = r.value(f.trip, "drum.speed");
+    f.alphaMax = oc::pendulumTurningAngle(f.J, f.W, f.alphaTrip, f.omegaTrip);
+    return f;
+}
+
+void rollbackCase(std::vector<ValidationRow>& rows) {
+    ModelSpec spec;
+    const AnalysisResult r = runModelFile(model("rollback"), {}, &spec);
+    const FrozenCharge f = frozenCharge(spec, r);
+    const double Wmax = f.W * (1 - std::cos(f.alphaMax));
+    const Worst energy = worstSample(r, f.trip, [&](std::size_t i) {
+        const double w = r.value(i, "drum.speed"), a = f.alpha0 + r.value(i, "drum.angle");
+        return Sample{0.5 * f.J * w * w + f.W * (1 - std::cos(a)), Wmax, Wmax};
+    });
+    rows.push_back(worstRow("start_backstop_rollback", "½·J·ω² + m·g·r_c·(1 − cos α) after the trip (worst sample)", "J",
+                            energy, kIntegratedTolerance,
+                            "= m·g·r_c·(1 − cos α_max), α_max = acos(cos α_t − J·ω_t²/(2·m·g·r_c)) from the trip state; "
+                            "m, r_c, J of the segment by the tumbling-mill oracle"));
+    // Sampled extremes: within half a sample dt/2 of the true one, where the
+    // pendulum's curvature (W/J) moves them by at most ½·(W/J)·(dt/2)² relative.
+    const double dt = spec.outputs.sampleInterval;
+    const double sampling = 0.5 * f.W / f.J * 0.25 * dt * dt;
+    double wMin = 0, aMin = 0;
+    for (std::size_t i = f.trip; i < r.rows.size(); ++i) {
+        wMin = std::min(wMin, r.value(i, "drum.speed"));
+        aMin = std::min(aMin, f.alpha0 + r.value(i, "drum.angle"));
+    }
+    rows.push_back(compareRow("start_backstop_rollback", "smallest (most negative) drum speed: it rolls back", "rad/s", wMin,
+                              -oc::pendulumBottomSpeed(f.J, f.W, f.alphaMax), sampling + kIntegratedTolerance,
+                              "−√(2·m·g·r_c·(1 − cos α_max)/J) through the bottom; tolerance: the 1 ms sampling "
+                              "(½·(W/J)·(dt/2)²) plus integration"));
+    rows.push_back(compareRow("start_backstop_rollback", "smallest charge angle: it swings through to the other side", "rad",
+                              aMin, -f.alphaMax, sampling * std::sin(f.alphaMax) / f.alphaMax + kIntegratedTolerance,
+                              "−α_max (no friction: the pendulum's amplitude is kept)"));
+    balanceRow("rollback", r, rows);
+}
+
+void backstopCase(std::vector<ValidationRow>& rows) {
+    ModelSpec spec;
+    const AnalysisResult r = runModelFile(model("backstop"), {}, &spec);
+    const FrozenCharge f = frozenCharge(spec, r);
+    const ElementSpec& b = *spec.findElement("backstop");
+    const double Mb = b.number("capacity"), wReg = b.number("regularisation_speed");
+    // The regularised backstop holds a load T while creeping back at
+    // ω_reg·atanh(T/M_b) (plugins/brakes/Brake.h): the held angle drifts by
+    // at most that speed at the largest load times the time held.
+    const double creep = wReg * std::atanh(oc::chargeHoldingTorque(f.W, f.alphaMax) / Mb);
+    const std::size_t last = r.rows.size() - 1;
+    const double aEnd = f.alpha0 + r.value(last, "drum.angle"), tEnd = r.value(last, "time");
+    const double drift = creep * (tEnd - f.tripTime) / f.alphaMax;
+    rows.push_back(compareRow("start_backstop_holds", "charge angle held at the end", "rad", aEnd, f.alphaMax,
+                              drift + kIntegratedTolerance,
+                              "α_max = acos(cos α_t − J·ω_t²/(2·m·g·r_c)); tolerance: the backstop's creep "
+                              "ω_reg·atanh(T/M_b)·t_held over α_max, plus integration"));
+    const double held = -r.value(last, "backstop.torque");
+    rows.push_back(compareRow("start_backstop_holds", "holding torque at the end, at the held angle", "N*m", held,
+                              oc::chargeHoldingTorque(f.W, aEnd), kIntegratedTolerance,
+                              "m·g·r_c·sin α (statics: the creep speed is constant to ~1e-12)"));
+    rows.push_back(compareRow("start_backstop_holds", "holding torque at the end against the closed-form stop", "N*m",
+                              held, oc::chargeHoldingTorque(f.W, f.alphaMax),
+                              drift * f.alphaMax / std::tan(f.alphaMax) + kIntegratedTolerance,
+                              "m·g·r_c·sin α_max; tolerance: the creep's drift times cot α_max, plus integration"));
+    double wMin = 0;
+    for (std::size_t i = f.trip; i < r.rows.size(); ++i) wMin = std::min(wMin, r.value(i, "drum.speed"));
+    ValidationRow back = compareRow("start_backstop_holds", "smallest drum speed after the trip: no roll-back", "rad/s",
+                                    wMin, -creep, 0,
+                                    "never below the creep −ω_reg·atanh(m·g·r_c·sin α_max/M_b) (approached from above)");
+    back.relError = std::abs(wMin / creep);
+    back.status = wMin >= -creep * (1 + kIntegratedTolerance) ? "pass" : "fail";
+    rows.push_back(back);
+    balanceRow("backstop", r, rows);
+}
+
 }  // namespace
 
 std::vector<ValidationRow> startCases(const std::string& filter) {
@@ -372,6 +470,8 @@ std::vector<ValidationRow> startCases(const std::string& filter) {
     if (wanted("start_clutch_slip_heat") || wanted("start_energy_balance_clutch")) clutchCase(rows);
     if (wanted("start_brake_runout") || wanted("start_energy_balance_brake")) brakeCase(rows);
     if (wanted("start_converter_torque_limit") || wanted("start_energy_balance_converter")) converterCase(rows);
+    if (wanted("start_backstop_rollback") || wanted("start_energy_balance_rollback")) rollbackCase(rows);
+    if (wanted("start_backstop_holds") || wanted("start_energy_balance_backstop")) backstopCase(rows);
     return rows;
 }
 

@@ -103,4 +103,12 @@ double brakedSpeed(double J, double w0, double Mb, double Mc, double Tr, double 
     return w0 - (Mc * t + rampImpulse) / J;
 }
 
+double pendulumTurningAngle(double J, double W, double a0, double w0) {
+    return std::acos(std::cos(a0) - J * w0 * w0 / (2 * W));
+}
+
+double pendulumBottomSpeed(double J, double W, double aMax) { return std::sqrt(2 * W * (1 - std::cos(aMax)) / J); }
+
+double chargeHoldingTorque(double W, double a) { return W * std::sin(a); }
+
 }  // namespace milldyn::oracles

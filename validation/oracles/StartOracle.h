@@ -89,4 +89,16 @@ double clutchSlipEnergy(double J1, double J2, double drivingSpeed, double fricti
 /// ω(t) = ω0 − (Mc·t + Mb·(t²/(2Tr) for t < Tr, t − Tr/2 after))/J [rad/s].
 double brakedSpeed(double J, double omega0, double brakeTorque, double loadTorque, double rampTime, double t);
 
+/// A rigid (frozen) charge on a free drum is a physical pendulum: with the
+/// moment m·g·r_c =: W [N*m] and the drum's and charge's inertia J
+/// [kg*m^2] about the axis, energy conservation ½·J·ω² + W·(1 − cos α)
+/// = const. The angle [rad] at which a drum at charge angle α0 (from the
+/// downward vertical) turning at ω0 [rad/s] stops:
+/// α_max = acos(cos α0 − J·ω0²/(2W)).
+double pendulumTurningAngle(double J, double W, double alpha0, double omega0);
+/// Its speed [rad/s] through the bottom (α = 0): √(2W·(1 − cos α_max)/J).
+double pendulumBottomSpeed(double J, double W, double alphaMax);
+/// The torque [N*m] that holds the charge at angle α: W·sin α.
+double chargeHoldingTorque(double W, double alpha);
+
 }  // namespace milldyn::oracles
