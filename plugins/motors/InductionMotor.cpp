@@ -493,14 +493,9 @@ void registerInductionMotor(ElementRegistry& registry) {
         P::quantityList("curve_speeds", "rad/s", 2, 200, "table: speeds, strictly increasing").optional(0.0).atLeast(0),
         P::quantityList("curve_torques", "N*m", 2, 200, "table: torques at curve_speeds").optional(0.0),
         P::quantityList("curve_currents", "A", 2, 200, "table: line currents at curve_speeds").optional(0.0).atLeast(0),
-        P::quantity("rated_current", "A", "not table: nameplate line current I_N (current by the circle diagram)")
-            .optional(0.0)
-            .above(0),
+        P::quantity("rated_current", "A", "not table: nameplate line current I_N (circle diagram)").optional(0.0).above(0),
         P::quantity("rated_power_factor", "1", "not table: nameplate power factor cos φ_N").optional(0.0).above(0).below(1),
-        P::quantity("locked_rotor_current_ratio", "1", "not table: locked-rotor over rated current I_LR/I_N")
-            .optional(0.0)
-            .above(1)
-            .atMost(20),
+        P::quantity("locked_rotor_current_ratio", "1", "not table: I_LR/I_N").optional(0.0).above(1).atMost(20),
         P::choice("starter", starters, "how the motor is started").optional("direct_on_line"),
         P::quantityList("switch_times", "s", 1, 20, "star_delta, rotor_resistance: switching times").optional(0.0).above(0),
         P::quantityList("switch_speeds", "rad/s", 1, 20, "star_delta, rotor_resistance: switching shaft speeds")
