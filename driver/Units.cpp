@@ -36,6 +36,9 @@ constexpr Dimension kPower{1, 2, -3, 0, 0};
 constexpr Dimension kEnergy{1, 2, -2, 0, 0};
 constexpr Dimension kVolume{0, 3, 0, 0, 0};
 constexpr Dimension kCurrent{0, 0, 0, 0, 1};
+constexpr Dimension kVoltage{1, 2, -3, 0, -1};
+constexpr Dimension kResistance{1, 2, -3, 0, -2};
+constexpr Dimension kInductance{1, 2, -2, 0, -2};
 
 const UnitDef kUnits[] = {
     {"kg", 1.0, kMass},
@@ -71,6 +74,12 @@ const UnitDef kUnits[] = {
     {"%", 0.01, kNone},
     {"A", 1.0, kCurrent},
     {"kA", 1e3, kCurrent},
+    {"V", 1.0, kVoltage},
+    {"kV", 1e3, kVoltage},
+    {"ohm", 1.0, kResistance},
+    {"mohm", 1e-3, kResistance},
+    {"H", 1.0, kInductance},
+    {"mH", 1e-3, kInductance},
 };
 
 // Common spellings that are not units here, with the unit to suggest.

@@ -3,6 +3,7 @@
 namespace milldyn {
 
 void registerInductionMotor(ElementRegistry& registry);
+void registerDqInductionMotor(ElementRegistry& registry);
 void registerTorsionalCoupling(ElementRegistry& registry);
 void registerResistanceTorque(ElementRegistry& registry);
 void registerPeriodicLoad(ElementRegistry& registry);
@@ -21,6 +22,7 @@ void registerBrake(ElementRegistry& registry);
 
 void registerBuiltinElements(ElementRegistry& registry) {
     registerInductionMotor(registry);
+    registerDqInductionMotor(registry);
     registerTorsionalCoupling(registry);
     registerResistanceTorque(registry);
     registerPeriodicLoad(registry);

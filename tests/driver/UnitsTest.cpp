@@ -208,11 +208,13 @@ TEST(UnitsDimension, ToStringIsCanonical) {
     EXPECT_EQ("kg/m/s^2", parseUnit("Pa").toString());
     EXPECT_EQ("A", parseUnit("kA").toString());
     EXPECT_EQ((Dimension{0, 0, 0, 0, 1}), parseUnit("A"));
+    EXPECT_EQ(parseUnit("V/A"), parseUnit("ohm"));
+    EXPECT_EQ(parseUnit("V*s/A"), parseUnit("H"));
 }
 
 TEST(UnitsDimension, ToStringRoundTripsForEveryKnownUnit) {
     const std::vector<std::string> names = knownUnitNames();
-    EXPECT_EQ(33u, names.size());  // A and kA: motor currents
+    EXPECT_EQ(39u, names.size());  // A, kA, V, kV, ohm, mohm, H, mH: motors
     for (const std::string& name : names) {
         const Dimension d = parseUnit(name);
         EXPECT_EQ(d, parseUnit(d.toString())) << name << " -> " << d.toString();

@@ -77,15 +77,20 @@ TEST(Backstop, AFrozenChargeRollsTheDrumBackUnlessABackstopHoldsIt) {
     const AnalysisResult held = runModelFile(modelsDirectory() + "/start_bench_backstop.yaml", {});
     double heldSlowest = 0;
     for (std::size_t i = 0; i < held.rows.size(); ++i) heldSlowest = std::min(heldSlowest, held.value(i, "drum.speed"));
-    // Creep of the regularised backstop: 1e-5·atanh(T/60 kN*m) rad/s with T < 60 kN*m.
-    EXPECT_GT(heldSlowest, -1e-5 * std::atanh(0.5));
-    const std::size_t last = held.rows.size() - 1;
-    const double T = -held.value(last, "backstop.torque");
+    // Creep of the regularised backstop: 1e-3·atanh(T/60 kN*m) rad/s, T < 30 kN*m (the charge's W).
+    EXPECT_GT(heldSlowest, -1e-3 * std::atanh(0.5));
     // m·g·r_c·sin α at the held angle; m, r_c of the 20 % segment (2 m x 1.5 m, 4650 kg/m^3) in closed form.
     const oracles::CircularSegmentCharge seg{1.0, 1.5, 4650, 0.2};
     const double W = oracles::segmentMass(seg) * 9.81 * oracles::segmentCentroidDistance(seg);
-    const double alpha = M_PI / 6 + held.value(last, "drum.angle");
-    EXPECT_NEAR(T, W * std::sin(alpha), 1e-6 * T);
+    // Over the last second (single samples scatter by ~6e-6: the backstop's
+    // torque answers the speed with the gain 6e7 N*m*s/rad).
+    double T = 0, statics = 0;
+    for (std::size_t i = held.rows.size() - 1000; i < held.rows.size(); ++i) {
+        T += -held.value(i, "backstop.torque") / 1000;
+        statics += W * std::sin(M_PI / 6 + held.value(i, "drum.angle")) / 1000;
+    }
+    EXPECT_GT(T, 0.5 * W * std::sin(M_PI / 6));  // it carries the charge
+    EXPECT_NEAR(T, statics, 1e-6 * T);
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "driver/analyses/Analysis.h"
 #include "driver/ModelFile.h"
 #include "plugins/motors/CurrentCircle.h"
+#include "plugins/motors/DqInductionMotor.h"
 #include "plugins/motors/InductionMotor.h"
 #include "plugins/motors/Starter.h"
 #include "plugins/motors/TorqueSpeedCurve.h"
@@ -398,6 +399,63 @@ TEST(InductionMotorInput, BadConverterAndCurrentInputsGiveOneLocatedLine) {
                                      "    locked_rotor_current_ratio: 7\n");
     EXPECT_NE(amps.find("error: motor.rated_current:"), std::string::npos) << amps;
     EXPECT_EQ(std::count(limit.begin(), limit.end(), '\n') + std::count(ratio.begin(), ratio.end(), '\n'), 0);
+}
+
+// The dq machine's currents and torque from its flux states, by hand:
+// with ψs = 1 Wb (α axis) and ψr = 0.9j Wb, is = (Lr·ψs − Lm·ψr)/D and
+// T = 1.5·p·Im(conj(ψs)·is).
+TEST(DqInductionMotor, CurrentsAndTorqueFromTheFluxStates) {
+    DqInductionMotorParams p;
+    p.statorResistance = 0.03;
+    p.rotorResistance = 0.04;
+    p.statorLeakage = 3e-4;
+    p.rotorLeakage = 4e-4;
+    p.mainInductance = 9e-3;
+    p.polePairs = 2;
+    p.phaseVoltage = 100;
+    p.frequency = 50;
+    test::ShaftSystem sys;
+    auto shaft = sys.addShaft(1.0);
+    auto* m = new DqInductionMotor(sys.forces(), shaft, p);
+    SimTK::Force::Custom force(sys.forces(), m);
+    SimTK::State s = sys.defaultState();
+    s.updZ()[0] = 1.0;  // ψs = 1 + 0j (this force's Z are the system's only ones)
+    s.updZ()[3] = 0.9;  // ψr = 0 + 0.9j
+    sys.system().realize(s, SimTK::Stage::Dynamics);
+    const double Ls = 9.3e-3, Lr = 9.4e-3, Lm = 9e-3, D = Ls * Lr - Lm * Lm;
+    // is = (Lr·1 − Lm·0.9j)/D: real Lr/D, imaginary −0.9·Lm/D.
+    EXPECT_NEAR(m->calcStatorCurrent(s).real(), Lr / D, 1e-9);
+    EXPECT_NEAR(m->calcStatorCurrent(s).imag(), -0.9 * Lm / D, 1e-9);
+    // Im(conj(1)·is) = −0.9·Lm/D, times 1.5·p = 3.
+    EXPECT_NEAR(m->calcTorque(s), 3 * (-0.9 * Lm / D), 1e-9);
+    // Supply at t = 5 ms: √2·100·e^(j·π/2).
+    EXPECT_NEAR(m->calcSupplyVoltage(0.005).imag(), 100 * std::sqrt(2.0), 1e-9);
+    p.rotorResistance = -1;
+    EXPECT_THROW(DqInductionMotor(sys.forces(), shaft, p), std::invalid_argument);
+}
+
+TEST(DqInductionMotor, BadInputGivesOneLocatedLine) {
+    auto errorOfDq = [](const std::string& keys) {
+        const std::string text = "format_version: 1\nname: t\nbodies:\n  - name: shaft\n    inertia: 1 kg*m^2\n"
+                                 "    joint: {type: pin, parent: ground}\nelements:\n  - type: DqInductionMotor\n"
+                                 "    name: motor\n    body: shaft\n" + keys +
+                                 "scenario:\n  analysis: transient\n  end_time: 1 s\n";
+        try {
+            readModelText(text, "m.yaml", defaultModelReader());
+        } catch (const SpecError& e) {
+            return e.formatted();
+        }
+        return std::string();
+    };
+    const std::string good = "    rotor_resistance: 0.04 ohm\n    stator_leakage_inductance: 0.3 mH\n"
+                             "    rotor_leakage_inductance: 0.3 mH\n    main_inductance: 9 mH\n    phase_voltage: 100 V\n";
+    EXPECT_EQ(errorOfDq("    stator_resistance: 0.03 ohm\n" + good), "");
+    const std::string negative = errorOfDq("    stator_resistance: -0.03 ohm\n" + good);
+    EXPECT_NE(negative.find("m.yaml:11:24: error: motor.stator_resistance: must be > 0"), std::string::npos) << negative;
+    const std::string unit = errorOfDq("    stator_resistance: 0.03 H\n" + good);
+    EXPECT_NE(unit.find("m.yaml:11:29: error: motor.stator_resistance: incompatible unit"), std::string::npos) << unit;
+    const std::string poles = errorOfDq("    stator_resistance: 0.03 ohm\n    pole_pairs: 1.5\n" + good);
+    EXPECT_NE(poles.find("error: motor.pole_pairs: must be a whole number"), std::string::npos) << poles;
 }
 
 }  // namespace

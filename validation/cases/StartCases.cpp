@@ -21,6 +21,10 @@
 //                          trips (no backstop): a pendulum, ±α_max, bottom speed
 //  start_backstop_holds    with a backstop the drum stops at α_max and is held
 //                          by m·g·r_c·sin α
+//  start_dq_steady_torque  the dq machine held at fixed slips: torque vs the T
+//                          equivalent circuit's closed form
+//  start_dq_dol_oscillation the dq machine switched on at standstill: torque
+//                          oscillation period vs 1/f
 //  start_energy_balance_*  every run's energy balance closes
 
 #include "driver/analyses/Analysis.h"
@@ -429,10 +433,21 @@ void backstopCase(std::vector<ValidationRow>& rows) {
                               drift + kIntegratedTolerance,
                               "α_max = acos(cos α_t − J·ω_t²/(2·m·g·r_c)); tolerance: the backstop's creep "
                               "ω_reg·atanh(T/M_b)·t_held over α_max, plus integration"));
-    const double held = -r.value(last, "backstop.torque");
-    rows.push_back(compareRow("start_backstop_holds", "holding torque at the end, at the held angle", "N*m", held,
-                              oc::chargeHoldingTorque(f.W, aEnd), kIntegratedTolerance,
-                              "m·g·r_c·sin α (statics: the creep speed is constant to ~1e-12)"));
+    // Averaged over the last second: the backstop's torque answers the speed
+    // with the gain M_b/ω_reg (6e7 N*m*s/rad here), so the integrator's error
+    // on the creep speed makes single samples scatter by ~6e-6 of the torque.
+    double held = 0, statics = 0;
+    std::size_t n = 0;
+    for (std::size_t i = last; i > 0 && r.value(i, "time") > tEnd - 1.0; --i, ++n) {
+        held += -r.value(i, "backstop.torque");
+        statics += oc::chargeHoldingTorque(f.W, f.alpha0 + r.value(i, "drum.angle"));
+    }
+    held /= static_cast<double>(n);
+    statics /= static_cast<double>(n);
+    rows.push_back(compareRow("start_backstop_holds", "holding torque over the last second, at the held angle", "N*m",
+                              held, statics, kIntegratedTolerance,
+                              "m·g·r_c·sin α at each sample's angle (statics: the creep's deceleration moves it by "
+                              "~5e-8), both averaged over the last second"));
     rows.push_back(compareRow("start_backstop_holds", "holding torque at the end against the closed-form stop", "N*m",
                               held, oc::chargeHoldingTorque(f.W, f.alphaMax),
                               drift * f.alphaMax / std::tan(f.alphaMax) + kIntegratedTolerance,
@@ -441,11 +456,77 @@ void backstopCase(std::vector<ValidationRow>& rows) {
     for (std::size_t i = f.trip; i < r.rows.size(); ++i) wMin = std::min(wMin, r.value(i, "drum.speed"));
     ValidationRow back = compareRow("start_backstop_holds", "smallest drum speed after the trip: no roll-back", "rad/s",
                                     wMin, -creep, 0,
-                                    "never below the creep −ω_reg·atanh(m·g·r_c·sin α_max/M_b) (approached from above)");
+                                    "never below the creep −ω_reg·atanh(m·g·r_c·sin α_max/M_b) (approached from above) "
+                                    "less 10× the integrator's accuracy in rad/s");
     back.relError = std::abs(wMin / creep);
-    back.status = wMin >= -creep * (1 + kIntegratedTolerance) ? "pass" : "fail";
+    // Allowance: Simbody controls a speed below 1 rad/s to about the accuracy
+    // in rad/s; ten times that, as the shipped models' energy rule allows.
+    back.status = wMin >= -creep - 10 * spec.integrator.accuracy ? "pass" : "fail";
     rows.push_back(back);
     balanceRow("backstop", r, rows);
+}
+
+/// The equivalent-circuit torque of the dq bench's machine (oracle).
+double dqCircuitTorque(const ElementSpec& m, double slip) {
+    return oc::equivalentCircuitTorque(slip, m.number("stator_resistance"), m.number("rotor_resistance"),
+                                       m.number("stator_leakage_inductance"), m.number("rotor_leakage_inductance"),
+                                       m.number("main_inductance"), static_cast<int>(m.number("pole_pairs")),
+                                       m.number("phase_voltage"), m.number("frequency"));
+}
+
+// The shaft held at a speed: an inertia of 1e9 kg*m^2 moves by < 1e-6 rad/s in 2 s under ~400 N*m.
+const std::vector<Override> kHeldShaft = {{"bodies.shaft.inertia", "1e9 kg*m^2"},
+                                          {"scenario.initial_state", "file"}};
+
+void dqSteadyCase(std::vector<ValidationRow>& rows) {
+    const ModelSpec spec = readModelFile(model("dq"), defaultModelReader());
+    const ElementSpec& m = *spec.findElement("motor");
+    const double ws = 2 * M_PI * m.number("frequency") / m.number("pole_pairs");
+    for (double slip : {0.5, 0.2, 0.05}) {
+        auto set = kHeldShaft;
+        set.push_back({"bodies.shaft.initial_speed", formatExact((1 - slip) * ws) + " rad/s"});
+        set.push_back({"scenario.end_time", "2 s"});
+        set.push_back({"outputs.sample_interval", "10 ms"});
+        const AnalysisResult r = runModelFile(model("dq"), set);
+        const std::size_t last = r.rows.size() - 1;
+        const double s = (ws - r.value(last, "shaft.speed")) / ws;  // the held speed, moved by < 1e-8
+        rows.push_back(compareRow("start_dq_steady_torque", "torque at slip " + std::to_string(slip).substr(0, 4) + " after 2 s", "N*m",
+                                  r.value(last, "motor.torque"), dqCircuitTorque(m, s), kIntegratedTolerance,
+                                  "T equivalent circuit: 3·|I_r|²·(Rr/s)/(ω_s/p); the switch-on DC fluxes have "
+                                  "decayed (turning: within 1 s; at standstill they decay with Ls/Rs + Lr/Rr = 0.55 s, "
+                                  "so s = 1 is left out: 2.6 % of oscillation remains after 2 s)"));
+    }
+}
+
+void dqOscillationCase(std::vector<ValidationRow>& rows) {
+    ModelSpec spec;
+    auto set = kHeldShaft;
+    set.push_back({"bodies.shaft.initial_speed", "0 rad/s"});
+    set.push_back({"scenario.end_time", "0.32 s"});
+    const AnalysisResult r = runModelFile(model("dq"), set, &spec);
+    const double f = spec.findElement("motor")->number("frequency"), dt = spec.outputs.sampleInterval;
+    // Times of the torque's local maxima from 0.1 s on, when the fast
+    // short-circuit mode ((Lsσ + Lrσ)/(Rs + Rr) = 9 ms) has died out and the
+    // slow DC flux (0.55 s) beats against the supply's field alone.
+    std::vector<double> peaks;
+    for (std::size_t i = 1; i + 1 < r.rows.size(); ++i) {
+        if (r.value(i, "time") < 0.1) continue;
+        const double a = r.value(i - 1, "motor.torque"), b = r.value(i, "motor.torque"), c = r.value(i + 1, "motor.torque");
+        if (b > a && b >= c) peaks.push_back(r.value(i, "time"));
+    }
+    if (peaks.size() < 2) throw std::runtime_error("start_dq_dol_oscillation: fewer than two torque peaks");
+    const std::size_t n = peaks.size() - 1;
+    const double period = (peaks[n] - peaks[0]) / static_cast<double>(n);
+    rows.push_back(compareRow("start_dq_dol_oscillation", "period of the switch-on torque oscillation (" +
+                                                               std::to_string(n) + " periods from 0.1 s, rotor held)",
+                              "s", period, 1 / f, dt / (static_cast<double>(n) / f),
+                              "1/f: the stator's and rotor's DC flux against the supply's rotating field; tolerance: "
+                              "one 0.1 ms sample over the periods measured"));
+}
+
+void dqStartCase(std::vector<ValidationRow>& rows) {
+    const AnalysisResult r = runModelFile(model("dq"), {});
+    balanceRow("dq", r, rows);
 }
 
 }  // namespace
@@ -472,6 +553,9 @@ std::vector<ValidationRow> startCases(const std::string& filter) {
     if (wanted("start_converter_torque_limit") || wanted("start_energy_balance_converter")) converterCase(rows);
     if (wanted("start_backstop_rollback") || wanted("start_energy_balance_rollback")) rollbackCase(rows);
     if (wanted("start_backstop_holds") || wanted("start_energy_balance_backstop")) backstopCase(rows);
+    if (wanted("start_dq_steady_torque")) dqSteadyCase(rows);
+    if (wanted("start_dq_dol_oscillation")) dqOscillationCase(rows);
+    if (wanted("start_energy_balance_dq")) dqStartCase(rows);
     return rows;
 }
 

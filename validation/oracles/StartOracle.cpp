@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 namespace milldyn::oracles {
 
@@ -110,5 +111,15 @@ double pendulumTurningAngle(double J, double W, double a0, double w0) {
 double pendulumBottomSpeed(double J, double W, double aMax) { return std::sqrt(2 * W * (1 - std::cos(aMax)) / J); }
 
 double chargeHoldingTorque(double W, double a) { return W * std::sin(a); }
+
+double equivalentCircuitTorque(double s, double Rs, double Rr, double Lss, double Lrs, double Lm, int p, double V,
+                               double f) {
+    using C = std::complex<double>;
+    const double w = 2 * M_PI * f;
+    const C rotor(Rr / s, w * Lrs), main(0, w * Lm);
+    const C Is = V / (C(Rs, w * Lss) + main * rotor / (main + rotor));
+    const C Ir = Is * main / (main + rotor);
+    return 3 * std::norm(Ir) * (Rr / s) / (w / p);
+}
 
 }  // namespace milldyn::oracles

@@ -101,4 +101,13 @@ double pendulumBottomSpeed(double J, double W, double alphaMax);
 /// The torque [N*m] that holds the charge at angle α: W·sin α.
 double chargeHoldingTorque(double W, double alpha);
 
+/// Steady torque [N*m] of an induction machine at slip s from its T
+/// equivalent circuit per phase (Fitzgerald & Kingsley, "Electric
+/// Machinery"): Z = Rs + jX_sσ + jX_m ∥ (Rr/s + jX_rσ), X = 2πf·L,
+/// I_s = V/Z, I_r = I_s·jX_m/(Rr/s + j(X_rσ + X_m)),
+/// T = 3·|I_r|²·(Rr/s)/(2πf/p). V the rms phase voltage [V], resistances
+/// [ohm], inductances [H], f [Hz], p pole pairs.
+double equivalentCircuitTorque(double slip, double Rs, double Rr, double Lss, double Lrs, double Lm, int p, double V,
+                               double f);
+
 }  // namespace milldyn::oracles
