@@ -18,10 +18,10 @@ struct CurrentCircleParams {
  * Stator (line) current of an induction motor against slip by the circle
  * diagram (Heyland/Ossanna): the approximate equivalent circuit with the
  * magnetising branch at the terminals and the stator resistance neglected
- * (Fitzgerald, Kingsley & Umans, "Electric Machinery", §6.5 "Torque and
- * power by use of Thévenin's theorem" and the approximate circuit of
- * §6.4; Kostenko & Piotrovsky, "Electrical Machines", vol. 2, the circle
- * diagram). Per unit of the rated phase voltage and of I_N:
+ * (Fitzgerald, Kingsley & Umans, "Electric Machinery", the polyphase
+ * induction machine's approximate equivalent circuit; Kostenko &
+ * Piotrovsky, "Electrical Machines", vol. 2, the circle diagram). Per unit
+ * of the rated phase voltage and of I_N:
  * <pre>
  *   I(s)  = −j·Iμ + D·(ρ − j)/(1 + ρ²),   ρ = s_c/s      (s = 0: I = −j·Iμ)
  *   D = V/X_k (the circle's diameter), s_c = R2'/X_k, Iμ the magnetising current
