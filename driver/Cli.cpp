@@ -335,7 +335,7 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     if (!result.verdict.empty()) out << "  verdict: " << result.verdictText << "\n";
     for (const auto& r : result.results)
         out << "  " << r.name << std::string(std::max<std::size_t>(2, 26 - std::min<std::size_t>(26, r.name.size())), ' ')
-            << describeValue(r.name, r.value, r.unit) << "\n";
+            << describeValue(r.name, r.value, r.unit) << (r.referredTo.empty() ? "" : " on " + r.referredTo) << "\n";
     for (const auto& n : result.notes) out << "  note: " << n << "\n";
     if (result.statistics.steps > 0)
         out << "  integrator " << result.statistics.integrator << ", accuracy " << result.statistics.accuracy

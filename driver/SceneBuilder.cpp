@@ -64,6 +64,7 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
     auto named = [&](const std::string& output) {
         return std::any_of(columns.begin(), columns.end(), [&](const std::string& c) { return isOrUnder(output, c); });
     };
+    std::vector<std::string> flowTypes;  // the type of the element that declared each energy flow
     for (const auto& e : spec.elements) {
         const ElementType* type = registry.find(e.type);
         if (!type) throw SpecError(e.where, e.name + ".type", "unknown element type '" + e.type + "'");
@@ -80,6 +81,7 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
         } catch (const SimTK::Exception::Base& err) {
             throw SpecError(e.where, e.name, "Simbody refused it: " + simbodyMessage(err.what()));
         }
+        flowTypes.resize(scene->energyFlows().size(), e.type);
     }
     if (!columns.empty()) {
         // Every column must name something: a typo would otherwise drop an
@@ -109,7 +111,7 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
         scene->omit("energy meter", "outputs.energy_balance is false");
     } else if (analysis == "transient" || analysis == "coastdown_identify") {
         // Last, so that it sees every element's energy flow.
-        auto* meter = new EnergyMeter(scene->forces(), scene->energyFlows());
+        auto* meter = new EnergyMeter(scene->forces(), scene->energyFlows(), flowTypes);
         SimTK::Force::Custom meterForce(scene->forces(), meter);
         scene->setEnergyMeter(meter);
         scene->note("energy meter (" + std::to_string(scene->energyFlows().size()) + " flows)",

@@ -120,8 +120,11 @@ Json runPoint(const SweepPlan& plan, const SweepOptions& options, const Json& sw
                 throw AnalysisError("result " + s.name + " is not finite (the analysis diverged)");
             results[s.name] = {{"value", s.value}, {"unit", s.unit}};
         }
-        // A start that stalled or did not finish is recorded as such.
-        const bool started = r.verdict.empty() || r.verdict == "completed";
+        // A start that stalled or did not finish (or a run-out that did not
+        // end) is recorded as such; a run from a given state that ran or
+        // held its speed is ok.
+        const bool started =
+            r.verdict.empty() || r.verdict == "completed" || r.verdict == "steady_held" || r.verdict == "ran";
         j["status"] = started ? "ok" : r.verdict;
         j["diagnostic"] = started ? "" : r.verdictText;
         j["results"] = results;

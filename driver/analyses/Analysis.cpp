@@ -293,6 +293,42 @@ AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, co
     }
 }
 
+std::string probeShaft(const ModelSpec& spec, const std::string& probeName) {
+    const std::size_t dot = probeName.find('.');
+    if (dot == std::string::npos || probeName.find('.', dot + 1) != std::string::npos) return "";
+    const ElementSpec* e = spec.findElement(probeName.substr(0, dot));
+    const ElementType* type = e ? ElementRegistry::instance().find(e->type) : nullptr;
+    if (!type) return "";
+    for (const auto& p : type->schema.params) {
+        const auto v = e->params.find(p.key);
+        if (v == e->params.end()) continue;
+        if (p.kind == ParamKind::BodyRef && !v->second.text.empty()) return v->second.text;
+        if (p.kind == ParamKind::BodyPair && !v->second.names.empty()) return v->second.names.front();
+        if (p.kind == ParamKind::BodyList && !v->second.names.empty()) {
+            std::vector<std::string> distinct;
+            for (const auto& n : v->second.names)
+                if (std::find(distinct.begin(), distinct.end(), n) == distinct.end()) distinct.push_back(n);
+            std::string out;
+            for (const auto& n : distinct) out += (out.empty() ? "" : ", ") + n;
+            return out;
+        }
+    }
+    return "";
+}
+
+std::string probeShafts(const ModelSpec& spec, const Scene& scene, ProbeRole role) {
+    std::vector<std::string> distinct;
+    for (const auto& p : scene.probes()) {
+        if (p.role != role) continue;
+        const std::string shaft = probeShaft(spec, p.name);
+        if (!shaft.empty() && std::find(distinct.begin(), distinct.end(), shaft) == distinct.end())
+            distinct.push_back(shaft);
+    }
+    std::string out;
+    for (const auto& n : distinct) out += (out.empty() ? "" : ", ") + n;
+    return out;
+}
+
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role) {
     double sum = 0;
     for (const auto& p : scene.probes())
@@ -326,6 +362,22 @@ const SceneBody& scenarioBody(const Scene& scene, const ElementSpec& scenario, c
     return name.empty() ? scene.bodies().front() : *scene.findBody(name);
 }
 
+namespace {
+
+/// The categories present in a meter, in the order of EnergyCategory.
+std::vector<EnergyCategory> presentCategories(const EnergyMeter& meter) {
+    std::vector<EnergyCategory> out;
+    for (int c = 0; c < kEnergyCategories; ++c)
+        for (std::size_t i = 0; i < meter.flows().size(); ++i)
+            if (static_cast<int>(meter.category(i)) == c) {
+                out.push_back(static_cast<EnergyCategory>(c));
+                break;
+            }
+    return out;
+}
+
+}  // namespace
+
 void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK::State& end,
                       AnalysisResult& result) {
     const EnergyMeter* meter = scene.energyMeter();
@@ -340,25 +392,15 @@ void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK
         // this right for a run that starts from a later state.
         const double w = meter->work(end, i) - meter->work(start, i);
         const EnergyFlow& f = meter->flows()[i];
-        std::string what = f.what;
         switch (f.kind) {
-            case EnergyFlow::Kind::Source:
-                sources += w;
-                if (what.empty()) what = "work of the drive " + f.name;
-                break;
-            case EnergyFlow::Kind::Load:
-                loads += w;
-                if (what.empty()) what = "work taken by the load " + f.name + " (grinding, crushing, lifting the charge)";
-                break;
-            case EnergyFlow::Kind::Dissipation:
-                dissipated += w;
-                if (what.empty()) what = "heat in " + f.name + " (friction or damping)";
-                break;
+            case EnergyFlow::Kind::Source: sources += w; break;
+            case EnergyFlow::Kind::Load: loads += w; break;
+            case EnergyFlow::Kind::Dissipation: dissipated += w; break;
         }
-        parts.push_back({"energy." + f.name, w, "J", what});
+        parts.push_back({"energy." + f.name, w, "J", meter->describe(i)});
     }
-    const double dKE = system.calcKineticEnergy(end) - system.calcKineticEnergy(start);
-    const double dPE = system.calcPotentialEnergy(end) - system.calcPotentialEnergy(start);
+    const EnergySplit split = calcEnergySplit(*meter, system, start, end);
+    const double dKE = split.kinetic, dPE = split.gravitational + split.elastic;
     const double residual = dKE + dPE - (sources - loads - dissipated);
     const double scale = std::max({std::abs(sources), std::abs(loads) + std::abs(dissipated),
                                    system.calcKineticEnergy(start), system.calcKineticEnergy(end),
@@ -367,16 +409,62 @@ void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK
                               "work of the drives (a motor's air-gap power, a prescribed drive's work)"});
     result.results.push_back({"energy_to_loads", loads, "J", "work taken by the loads (grinding, crushing)"});
     result.results.push_back({"energy_dissipated", dissipated, "J",
-                              "heat: rotor circuits, friction, damping, belt and clutch slip (energy.* splits it)"});
+                              "heat: motor rotors, friction (journals, brakes, clutch slip) and damping "
+                              "(couplings, belts, gear meshes); energy_split.* and energy.* split it"});
     result.results.push_back({"kinetic_energy_change", dKE, "J", "end minus start"});
     result.results.push_back({"potential_energy_change", dPE, "J",
-                              "end minus start (gravity on lifted bodies and charges, spring strain)"});
+                              "end minus start: gravitational plus elastic (the two lines below)"});
+    result.results.push_back({"gravitational_energy_change", split.gravitational, "J",
+                              "end minus start: gravity on lifted bodies, including a charge carried up the shell"});
+    result.results.push_back({"elastic_energy_change", split.elastic, "J",
+                              "end minus start: strain of couplings, belts, gear meshes and shafts"});
     result.results.push_back({"energy_balance_residual", residual, "J",
                               "dKE + dPE - (sources - loads - dissipated): the integration error"});
     result.results.push_back({"energy_balance_relative", residual / scale, "1",
                               "the residual over the largest energy of the run"});
-    // Each flow by name, so the parts of every sum can be read (and add up).
+    // By category (EnergyMeter's one classification), then each flow by
+    // name, so the parts of every sum can be read (and add up).
+    for (EnergyCategory c : presentCategories(*meter))
+        result.results.push_back({"energy_split." + energyCategoryKey(c), split.of(c), "J", energyCategoryLabel(c)});
     result.results.insert(result.results.end(), parts.begin(), parts.end());
+}
+
+bool addMeanPower(const Scene& scene, const SimTK::State& from, const SimTK::State& to, const std::string& window,
+                  AnalysisResult& result) {
+    const EnergyMeter* meter = scene.energyMeter();
+    const double dt = to.getTime() - from.getTime();
+    if (!meter || !(dt > 0)) return false;
+    const SimTK::MultibodySystem& system = scene.system();
+    system.realize(from, SimTK::Stage::Dynamics);
+    system.realize(to, SimTK::Stage::Dynamics);
+    const EnergySplit split = calcEnergySplit(*meter, system, from, to);
+    const std::string over = ", mean over " + window;
+    const std::vector<EnergyCategory> present = presentCategories(*meter);
+    auto has = [&](EnergyCategory c) { return std::find(present.begin(), present.end(), c) != present.end(); };
+    double scale = std::numeric_limits<double>::min();
+    for (EnergyCategory c : present) {
+        result.results.push_back({"mean_power." + energyCategoryKey(c), split.of(c) / dt, "W", energyCategoryLabel(c) + over});
+        scale = std::max(scale, std::abs(split.of(c)));
+    }
+    if (has(EnergyCategory::MotorLoss))
+        result.results.push_back(
+            {"mean_power.shaft_input",
+             (split.of(EnergyCategory::MotorInput) - split.of(EnergyCategory::MotorLoss)) / dt, "W",
+             "mechanical power the drives put into the shafts: motor_input less motor_loss" + over});
+    result.results.push_back({"mean_power.stored_change", split.stored() / dt, "W",
+                              "rate of change of the stored energy (kinetic + gravitational + elastic)" + over});
+    result.results.push_back({"mean_power.kinetic_change", split.kinetic / dt, "W", "rate of change of kinetic energy" + over});
+    result.results.push_back({"mean_power.gravitational_change", split.gravitational / dt, "W",
+                              "rate of change of gravitational energy (lifted bodies, a charge's lift)" + over});
+    result.results.push_back({"mean_power.elastic_change", split.elastic / dt, "W",
+                              "rate of change of elastic energy (couplings, belts, gear meshes, shafts)" + over});
+    scale = std::max({scale, std::abs(split.kinetic), std::abs(split.gravitational), std::abs(split.elastic)});
+    result.results.push_back({"mean_power.residual", split.residual() / dt, "W",
+                              "motor_input - motor_loss - (grinding + friction + damping + stored_change): the "
+                              "integration error" + over});
+    result.results.push_back({"mean_power.residual_relative", split.residual() / scale, "1",
+                              "mean_power.residual over the largest term of the split"});
+    return true;
 }
 
 void addDefaultPlots(AnalysisResult& result) {

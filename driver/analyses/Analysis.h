@@ -17,6 +17,11 @@ struct ResultScalar {
     double value = 0;
     std::string unit;
     std::string doc;
+    /// For a torque: the body (shaft) it acts on, as the value is given —
+    /// a coupling's torque on its driving (from) shaft, a gear pair's on
+    /// gear 1; several names, comma-separated, for a sum over loads on
+    /// different shafts. Empty for other quantities.
+    std::string referredTo = {};
 };
 
 /// A further table an analysis writes as NAME.csv.
@@ -111,6 +116,14 @@ AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn& prog
 /// The scene's derived values as results (AnalysisResult::derived).
 std::vector<ResultScalar> derivedResults(const Scene& scene);
 
+/// The shaft a probe named ELEMENT.x acts on: the element's first body key
+/// (`body`, `drum`, `carrier`, the first of `bodies`: a coupling's driving
+/// shaft, a gear pair's gear 1), or every body of a body list (comma-
+/// separated). Empty for a probe that is not ELEMENT.x of a model element.
+std::string probeShaft(const ModelSpec& spec, const std::string& probeName);
+/// The distinct shafts of every probe with this role, comma-separated.
+std::string probeShafts(const ModelSpec& spec, const Scene& scene, ProbeRole role);
+
 /// Sum of every probe with this role in this state.
 double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);
 
@@ -130,6 +143,16 @@ const SceneBody& scenarioBody(const Scene& scene, const ElementSpec& scenario, c
 /// energy, and the residual of ΔKE + ΔPE = W_sources − W_loads − W_dissipated).
 void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK::State& end,
                       AnalysisResult& result);
+
+/// Adds the power split of the window [from, to] of one run (both samples
+/// of it): the mean power of every EnergyCategory present (motor input,
+/// motor loss, grinding, friction, damping), the mechanical shaft input,
+/// the rates of change of kinetic, gravitational and elastic energy, and
+/// the residual of motor_input − motor_loss = grinding + friction + damping
+/// + d(stored)/dt. `window` says which window in words. False (nothing
+/// added) without an energy meter or for an empty window.
+bool addMeanPower(const Scene& scene, const SimTK::State& from, const SimTK::State& to, const std::string& window,
+                  AnalysisResult& result);
 
 /// Adds the usual plots: every speed column, every torque column.
 void addDefaultPlots(AnalysisResult& result);

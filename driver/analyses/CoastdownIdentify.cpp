@@ -182,15 +182,17 @@ AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& pro
     result.analysis = "coastdown_identify";
     result.derived = derivedResults(*buildScene(spec));
     const Trial final = problem.simulate(Mc, 50 * target + 10, &result);
+    const std::string shaft = probeShaft(spec, sc.text("resistance") + ".torque");
     result.results.push_back({"resistance_torque", Mc, "N*m",
-                              "constant resistance reproducing the run-out time (" + sc.text("runout_measure") + ")"});
+                              "constant resistance reproducing the run-out time (" + sc.text("runout_measure") + ")",
+                              shaft});
     result.results.push_back({"steady_speed", final.steadySpeed, "rad/s", "steady running speed before switch-off"});
     result.results.push_back({"power", final.power, "W", "power absorbed by the loads in steady running (eq 15)"});
     result.results.push_back({"runout_time", final.runoutTime, "s", "simulated run-out at the identified torque"});
     const double idleTime = sc.number("idle_runout_time");
     if (idleTime > 0) {
         const double McIdle = problem.identify(idleTime, Mc, tolerance);
-        result.results.push_back({"idle_resistance_torque", McIdle, "N*m", "identified from idle_runout_time"});
+        result.results.push_back({"idle_resistance_torque", McIdle, "N*m", "identified from idle_runout_time", shaft});
         result.results.push_back({"millstone_torque", (Mc - McIdle) * sc.number("belt_ratio"), "N*m",
                                   "M_zh = (Mc − Mc,idle)·u_p"});
     }

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -33,107 +34,178 @@ std::string fmt(double v) {
     return o.str();
 }
 
+/// Whether speed_body held its speed over the last hold window before the
+/// first switch-off (or the end), with the numbers the verdicts quote.
+struct HoldCheck {
+    bool valid = false;  ///< there were samples in the window
+    bool held = false;
+    bool stillRising = false;
+    double tStart = 0, tEnd = 0, wStart = 0, wEnd = 0, wRef = 0, band = 0, hold = 0, worst = 0, tol = 0;
+    bool hinted = false;
+    std::string holdText;  ///< "within ±… rad/s (… % of ω_ref) for the last … s before …"
+};
+
 /**
- * The start verdict over the samples up to the first switch-off (the start
- * window); returns whether the speed was held (also for a run that does not
- * start from rest, which gets no verdict). The reference speed ω_ref is the drives' rated speed referred
- * to speed_body (Scene::speedHints; the final speed if no drive hints one).
- * The speed is *held* when every sample of the last hold_time of the
- * window lies within start_tolerance·ω_ref of the window's last speed ω_e,
- * and its mean drift over that time, continued for another hold_time,
- * would not leave that band.
- *   completed:  held and ω_e >= stall_fraction·ω_ref
- *   stalled:    held and ω_e <  stall_fraction·ω_ref, and not still gaining
- *               speed over the second half of the run at >= a tenth of its
- *               mean rate since the start (the
- *               drive cannot take the load past this speed; the torques
- *               there are given)
- *   unfinished: not held (still accelerating, or oscillating) when the
- *               window ended
+ * The speed is *held* when every sample of the last hold_time of the start
+ * window (the samples up to the first switch-off) lies within
+ * start_tolerance·ω_ref of the window's last speed ω_e, and its mean drift
+ * over that time, continued for another hold_time, would not leave that
+ * band. The reference speed ω_ref is the drives' rated speed referred to
+ * speed_body (Scene::speedHints; the final speed if no drive hints one).
  */
-bool judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body, std::size_t col, double switchTime,
-                bool fromRest, AnalysisResult& result) {
+HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& body, std::size_t col,
+                    double switchTime, const AnalysisResult& result) {
     const ElementSpec& sc = spec.scenario;
+    HoldCheck h;
     std::vector<const std::vector<double>*> window;
     for (const auto& row : result.rows)
         if (row[0] <= switchTime) window.push_back(&row);
-    if (window.empty()) return false;
-    const double tEnd = window.back()->at(0), wEnd = window.back()->at(col);
+    if (window.empty()) return h;
+    h.valid = true;
+    h.tStart = window.front()->at(0);
+    h.wStart = window.front()->at(col);
+    h.tEnd = window.back()->at(0);
+    h.wEnd = window.back()->at(col);
     const auto hints = scene.speedHints();
     const auto hint = hints.find(body.name);
-    const bool hinted = hint != hints.end() && hint->second > 0;
-    const double wRef = hinted ? hint->second : std::abs(wEnd);
-    const double tol = sc.number("start_tolerance");
-    const double hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (tEnd - window.front()->at(0));
-    const double band = tol * wRef;
-    bool held = window.front()->at(0) <= tEnd - hold && wRef > 0;
-    double worst = 0;
+    h.hinted = hint != hints.end() && hint->second > 0;
+    // No rated speed hinted: the larger of the window's first and last
+    // speeds (a start's final speed; a run-out's initial one).
+    h.wRef = h.hinted ? hint->second : std::max(std::abs(h.wEnd), std::abs(h.wStart));
+    h.tol = sc.number("start_tolerance");
+    h.hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (h.tEnd - h.tStart);
+    h.band = h.tol * h.wRef;
+    bool held = h.tStart <= h.tEnd - h.hold && h.wRef > 0;
     for (const auto* row : window)
-        if (row->at(0) >= tEnd - hold) worst = std::max(worst, std::abs(row->at(col) - wEnd));
+        if (row->at(0) >= h.tEnd - h.hold) h.worst = std::max(h.worst, std::abs(row->at(col) - h.wEnd));
     // Held also means not drifting out: at the window's mean rate the speed
     // must stay in the band for another hold window.
-    const double tWindow = std::max(tEnd - hold, window.front()->at(0));
-    double wWindow = wEnd;
+    const double tWindow = std::max(h.tEnd - h.hold, h.tStart);
+    double wWindow = h.wEnd;
     for (const auto* row : window)
         if (row->at(0) >= tWindow) {
             wWindow = row->at(col);
             break;
         }
-    const double drift = hold > 0 ? std::abs(wEnd - wWindow) / hold : 0;
-    const double elapsed = tEnd - window.front()->at(0);
-    held = held && worst <= band && drift * hold <= band;
+    const double drift = h.hold > 0 ? std::abs(h.wEnd - wWindow) / h.hold : 0;
+    const double elapsed = h.tEnd - h.tStart;
+    h.held = held && h.worst <= h.band && drift * h.hold <= h.band;
     // A stall is an equilibrium: below the started speed a shaft that
-    // gained speed over the second half of the run at >= a tenth of its mean
-    // rate since the start is not stalled but slow (its start is
+    // gained speed over the second half of the run at >= a tenth of its
+    // mean rate since the start is not stalled but slow (its start is
     // unfinished). Half the run, not the hold window: a belt mode rings
     // through a short window.
-    const double meanRate = elapsed > 0 ? std::abs(wEnd - window.front()->at(col)) / elapsed : 0;
-    const double tMid = window.front()->at(0) + 0.5 * elapsed;
-    double wMid = wEnd, tMidSample = tEnd;
+    const double meanRate = elapsed > 0 ? std::abs(h.wEnd - h.wStart) / elapsed : 0;
+    const double tMid = h.tStart + 0.5 * elapsed;
+    double wMid = h.wEnd, tMidSample = h.tEnd;
     for (const auto* row : window)
         if (row->at(0) >= tMid) {
             wMid = row->at(col);
             tMidSample = row->at(0);
             break;
         }
-    const bool stillRising = tEnd > tMidSample && (wEnd - wMid) / (tEnd - tMidSample) > 0.1 * meanRate;
-    if (!fromRest) return held;  // no start to judge: only whether the end is steady
+    h.stillRising = h.tEnd > tMidSample && (h.wEnd - wMid) / (h.tEnd - tMidSample) > 0.1 * meanRate;
+    h.holdText = "within ±" + fmt(h.band) + " rad/s (" + fmt(h.tol * 100) + " % of ω_ref) for the last " +
+                 fmt(h.hold) + " s before " + (h.tEnd >= switchTime ? "switch-off" : "the end");
+    return h;
+}
+
+/**
+ * The start verdict (a run from rest) over the start window:
+ *   completed:  held and ω_e >= stall_fraction·ω_ref
+ *   stalled:    held and ω_e <  stall_fraction·ω_ref, and not still gaining
+ *               speed over the second half of the run at >= a tenth of its
+ *               mean rate since the start (the drive cannot take the load
+ *               past this speed; the torques there are given)
+ *   unfinished: not held (still accelerating, or oscillating) when the
+ *               window ended
+ */
+void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body, const HoldCheck& h,
+                AnalysisResult& result) {
+    if (!h.valid) return;
+    const ElementSpec& sc = spec.scenario;
     const double fraction = sc.number("stall_fraction");
-    const std::string ref = hinted ? "the drives' running speed " + fmt(wRef) + " rad/s referred to " + body.name
-                                   : "its final speed (no drive hints a rated speed)";
-    const std::string holdText = "within ±" + fmt(band) + " rad/s (" + fmt(tol * 100) + " % of ω_ref) for the last " +
-                                 fmt(hold) + " s before " + (tEnd >= switchTime ? "switch-off" : "the end");
-    const double wRpm = wEnd * 30 / SimTK::Pi;
-    if (held && std::abs(wEnd) >= fraction * wRef) {
+    const std::string ref = h.hinted ? "the drives' running speed " + fmt(h.wRef) + " rad/s referred to " + body.name
+                                     : "its final speed (no drive hints a rated speed)";
+    const double wRpm = h.wEnd * 30 / SimTK::Pi;
+    if (h.held && std::abs(h.wEnd) >= fraction * h.wRef) {
         result.verdict = "completed";
-        result.verdictText = "start completed: " + body.name + " held " + fmt(wEnd) + " rad/s (" + fmt(wRpm) + " rpm) " +
-                             holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref;
-    } else if (held && !stillRising) {
+        result.verdictText = "start completed: " + body.name + " held " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
+                             " rpm) " + h.holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref;
+    } else if (h.held && !h.stillRising) {
         result.verdict = "stalled";
         // Drive and load torques at the last sample of the window.
+        const std::vector<double>* last = nullptr;
+        for (const auto& row : result.rows)
+            if (row[0] <= h.tEnd) last = &row;
         std::string drive, load;
-        for (std::size_t i = 0; i < scene.probes().size(); ++i) {
+        for (std::size_t i = 0; i < scene.probes().size() && last; ++i) {
             const Probe& p = scene.probes()[i];
-            const double v = window.back()->at(1 + 2 * scene.bodies().size() + i);
+            const double v = last->at(1 + 2 * scene.bodies().size() + i);
             if (p.role == ProbeRole::DriveTorque) drive += (drive.empty() ? "" : ", ") + p.name + " = " + fmt(v) + " N*m";
             if (p.role == ProbeRole::ResistanceTorque)
                 load += (load.empty() ? "" : ", ") + p.name + " = " + fmt(v) + " N*m";
         }
-        result.verdictText = "start stalled: " + body.name + " held " + fmt(wEnd) + " rad/s (" + fmt(wRpm) + " rpm, " +
-                             fmt(100 * wEnd / wRef) + " % of " + ref + ") " + holdText + ", below the " +
-                             fmt(fraction * 100) + " % that counts as started; there the drive torque is " +
-                             (drive.empty() ? "none" : drive) + " against the load torque " +
+        result.verdictText = "start stalled: " + body.name + " held " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
+                             " rpm, " + fmt(100 * h.wEnd / h.wRef) + " % of " + ref + ") " + h.holdText +
+                             ", below the " + fmt(fraction * 100) + " % that counts as started; there the drive "
+                             "torque is " + (drive.empty() ? "none" : drive) + " against the load torque " +
                              (load.empty() ? "none" : load) +
                              " (each on its own shaft): the drive cannot take the load past this speed";
     } else {
         result.verdict = "unfinished";
-        result.verdictText = "start unfinished: " + body.name + " was at " + fmt(wEnd) + " rad/s (" + fmt(wRpm) +
-                             " rpm) at " + fmt(tEnd) + " s and not held " + holdText + " (it moved by up to " +
-                             fmt(worst) + " rad/s): no start time or steady values are given; lengthen end_time";
+        result.verdictText = "start unfinished: " + body.name + " was at " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
+                             " rpm) at " + fmt(h.tEnd) + " s and not held " + h.holdText + " (it moved by up to " +
+                             fmt(h.worst) + " rad/s): no start time or steady values are given; lengthen end_time";
     }
     result.results.push_back({"start_completed", result.verdict == "completed" ? 1.0 : 0.0, "1",
                               "1 if the start completed (see verdict), else 0"});
-    return held;
+}
+
+/**
+ * The verdict of a run that does not start from rest (initial_state steady
+ * or file): what it started from and whether it ended where asked.
+ *   steady_held: no switch-off, and speed_body held its speed (HoldCheck)
+ *                over the last hold window
+ *   ran:         it ran its schedule: a switch-off (and the run-out body's
+ *                stop, if one is named), or no switch-off and a speed not
+ *                held at the end (a periodic load, a run still settling: the
+ *                text gives how far it moved)
+ *   unfinished:  a run-out was asked (runout_body) and that body had not
+ *                come to rest at end_time
+ */
+void judgeRun(const ModelSpec& spec, const SceneBody& body, const HoldCheck& h, bool switched, double switchTime,
+              const std::optional<double>& stopTime, double tLast, double wLast, AnalysisResult& result) {
+    if (!h.valid) return;
+    const ElementSpec& sc = spec.scenario;
+    const std::string from = sc.text("initial_state") == "steady"
+                                 ? "the solved steady running"
+                                 : "the bodies' given initial state (initial_* keys)";
+    const std::string began = "started from " + from + ", " + body.name + " at " + fmt(h.wStart) + " rad/s";
+    const std::string heldText = h.held ? body.name + " held " + fmt(h.wEnd) + " rad/s " + h.holdText
+                                        : body.name + " was not held " + h.holdText + " (it moved by up to " +
+                                              fmt(h.worst) + " rad/s, ending at " + fmt(h.wEnd) + " rad/s)";
+    const std::string ref = "; ω_ref = " + fmt(h.wRef) + " rad/s, " +
+                            (h.hinted ? "the drives' running speed referred to " + body.name
+                                      : "the larger of its first and last speeds (no drive hints one)");
+    const std::string runout = sc.text("runout_body");
+    if (!switched) {
+        result.verdict = h.held ? "steady_held" : "ran";
+        result.verdictText = (h.held ? "steady held: " : "ran, not steady at the end: ") + began + "; " + heldText + ref;
+        return;
+    }
+    const std::string off = began + "; before switch-off at " + fmt(switchTime) + " s: " + heldText;
+    if (!runout.empty() && !stopTime) {
+        result.verdict = "unfinished";
+        result.verdictText = "run-out unfinished: " + off + "; " + runout + " had not come to rest at " +
+                             fmt(tLast) + " s (" + body.name + " at " + fmt(wLast) + " rad/s); lengthen end_time" + ref;
+        return;
+    }
+    result.verdict = "ran";
+    result.verdictText = "ran: " + off + (stopTime ? "; " + runout + " came to rest at " + fmt(*stopTime) + " s"
+                                                   : "; the run ended at " + fmt(tLast) + " s with " + body.name +
+                                                         " at " + fmt(wLast) + " rad/s") +
+                         ref;
 }
 
 }  // namespace
@@ -179,6 +251,14 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     SimTK::State steady = state;
     bool steadyCopied = false;
     const double copyFrom = switchTime - 1.5 * spec.outputs.sampleInterval;
+    // The analysis window: the last hold window before the first switch-off
+    // (or the end). The verdict judges the speed over it, the power split
+    // averages over it (from the first sample in it to the steady sample).
+    const double tWindowEnd = std::min(switchTime, endTime);
+    const double hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (tWindowEnd - state.getTime());
+    const double tWindowStart = tWindowEnd - hold - 1e-9 * std::max(1.0, std::abs(tWindowEnd));
+    SimTK::State windowStart;
+    bool windowCopied = false;
     double peakDrive = 0;
     std::vector<double> peakCoupling(scene->probes().size(), 0.0);
     auto onSample = [&](const SimTK::State& s) {
@@ -188,6 +268,10 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             SimTK::State drawn = s;
             scene->system().realize(drawn, SimTK::Stage::Acceleration);
             observer(*scene, drawn, s.getTime());
+        }
+        if (!windowCopied && s.getTime() >= tWindowStart && s.getTime() <= switchTime) {
+            windowStart = s;
+            windowCopied = true;
         }
         if (s.getTime() <= switchTime && s.getTime() > copyFrom) {
             steady = s;
@@ -224,7 +308,12 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
 
     // The start verdict (from rest only): over the samples before switch-off.
     const std::size_t speedCol = table.column(speedColumnName(*scene, speedBody));
-    if (start == "rest") judgeStart(*scene, spec, speedBody, speedCol, switchTime, true, result);
+    const HoldCheck holdCheck = checkHold(*scene, spec, speedBody, speedCol, switchTime, result);
+    if (start == "rest")
+        judgeStart(*scene, spec, speedBody, holdCheck, result);
+    else
+        judgeRun(spec, speedBody, holdCheck, switched, switchTime, stopTime, last.getTime(),
+                 pinSpeed(last, speedBody.mobod), result);
     // A start that did not complete has no steady values. (A run from a
     // given or steady state keeps the names: what it ends in is the user's
     // question, e.g. a braked run-out's end speed.)
@@ -234,22 +323,38 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     const std::string suffix = reached ? "" : "_at_end";
     result.results.push_back({reached ? "steady_speed" : "speed_at_end", omega, "rad/s",
                               "speed of " + speedBody.name + " " + at});
+    const std::string loadShafts = probeShafts(spec, *scene, ProbeRole::ResistanceTorque);
+    const std::string driveShafts = probeShafts(spec, *scene, ProbeRole::DriveTorque);
     result.results.push_back({"resistance_torque" + suffix, sumProbes(*scene, steady, ProbeRole::ResistanceTorque),
-                              "N*m", "sum of load torques " + at + ", each on its own shaft (" +
-                                         probeNames(*scene, ProbeRole::ResistanceTorque) + ")"});
+                              "N*m",
+                              "sum of load torques " + at + ", each on its own shaft (" +
+                                  probeNames(*scene, ProbeRole::ResistanceTorque) + ")",
+                              loadShafts});
     result.results.push_back({"power" + suffix, sumProbes(*scene, steady, ProbeRole::ResistancePower), "W",
                               "power absorbed by the loads " + at});
+    if (windowCopied)
+        addMeanPower(*scene, windowStart, steady,
+                     "the last " + fmt(steady.getTime() - windowStart.getTime()) + " s " +
+                         (switched ? "before switch-off" : "of the run") + " (" + fmt(windowStart.getTime()) + " to " +
+                         fmt(steady.getTime()) + " s)",
+                     result);
     result.results.push_back({"drive_torque" + suffix, sumProbes(*scene, steady, ProbeRole::DriveTorque), "N*m",
                               "sum of drive torques " + at + ", each on its own shaft (" +
-                                  probeNames(*scene, ProbeRole::DriveTorque) + ")"});
+                                  probeNames(*scene, ProbeRole::DriveTorque) + ")",
+                              driveShafts});
     result.results.push_back({"peak_drive_torque", peakDrive, "N*m",
-                              "largest drive torque of the run (" + probeNames(*scene, ProbeRole::DriveTorque) + ")"});
+                              "largest drive torque of the run (" + probeNames(*scene, ProbeRole::DriveTorque) + ")",
+                              driveShafts});
     // Couplings sit on shafts of different speeds: one peak each.
     for (std::size_t i = 0; i < scene->probes().size(); ++i)
         if (scene->probes()[i].role == ProbeRole::CouplingTorque) {
             const std::string name = scene->probes()[i].name;
+            const std::string shaft = probeShaft(spec, name);
             result.results.push_back({"peak." + name, peakCoupling[i], "N*m",
-                                      "largest |" + name + "| of the run (on its from-shaft)"});
+                                      "largest |" + name + "| of the run, the torque on " +
+                                          (shaft.empty() ? std::string("its driving shaft") : shaft) +
+                                          " (the driving shaft; the driven shaft carries it times the speed ratio)",
+                                      shaft});
         }
     if (start == "rest" && omega > 0 && reached) {
         for (const auto& row : result.rows)

@@ -42,8 +42,10 @@ std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& resul
     j["analysis"] = result.analysis;
     if (!result.verdict.empty()) j["verdict"] = {{"status", result.verdict}, {"reason", result.verdictText}};
     nlohmann::ordered_json results = nlohmann::ordered_json::object();
-    for (const auto& r : result.results)
+    for (const auto& r : result.results) {
         results[r.name] = {{"value", r.value}, {"unit", r.unit}, {"description", r.doc}};
+        if (!r.referredTo.empty()) results[r.name]["referred_to"] = r.referredTo;
+    }
     j["results"] = results;
     nlohmann::ordered_json derived = nlohmann::ordered_json::object();
     for (const auto& r : result.derived)
