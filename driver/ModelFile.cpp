@@ -188,6 +188,13 @@ YAML::Node loadOneDocument(const std::string& text, const std::string& file, con
     }
 }
 
+/// A key that tells yaml-cpp nodes apart in a hash table: the address of the
+/// node's data (its tag string lives there, one per node, stable while the
+/// node exists). Two nodes with one key are then told apart by Node::is.
+/// Not the source position: a part included N times puts N nodes at each
+/// position, and a lookup by position compared all N (quadratic expansion).
+const void* nodeKey(const YAML::Node& n) { return &n.Tag(); }
+
 /// Reads one YAML document into a ModelSpec, remembering which nodes came
 /// from --set so their diagnostics point at the command line.
 class Reader {
@@ -201,6 +208,7 @@ public:
         YAML::Node root = loadOneDocument(text, m_file, "");
         if (!root || root.IsNull()) throw SpecError({m_file, 1, 1}, "", "the model file is empty");
         requireMap(root, "<document>");
+        adopt(root);
         std::vector<OpenFile> open{{canonicalPath(m_file), m_file}};
         resolveIncludes(root, open);  // first: --set reaches included values too
         // The preset's settings first, every other --set after them: an
@@ -292,11 +300,26 @@ private:
     };
     std::vector<Inclusion> m_inclusions;
     /// Every node of every included file, with the index of its inclusion:
-    /// yaml-cpp marks know line and column but not the file.
-    /// Bucketed by the node's byte offset in its file, so a lookup compares
-    /// only the nodes at that offset (one per inclusion of that part), not
-    /// every node of every part (that made include expansion quadratic).
-    std::unordered_map<long long, std::vector<std::pair<YAML::Node, std::size_t>>> m_origin;
+    /// yaml-cpp marks know line and column but not the file. Keyed by node
+    /// identity (nodeKey), so a lookup costs the same however often a part
+    /// is included.
+    std::unordered_map<const void*, std::vector<std::pair<YAML::Node, std::size_t>>> m_origin;
+    /// The one node memory of this read. yaml-cpp gives every document, and
+    /// every node made with YAML::Node(type), a memory (a std::set of its
+    /// nodes); joining two nodes merges the right-hand memory into the left
+    /// one and points only the right-hand node's holder at it, so the other
+    /// parts' holders kept pointing at memories already merged elsewhere and
+    /// every later join copied those whole again: including one part N
+    /// times cost O(N^2) set insertions (issue 16 item 10; 67 % of the time
+    /// in std::_Rb_tree_increment). Every document is adopted into this one
+    /// memory as soon as it is parsed and every list assembled here is made
+    /// in it, so each later join finds the two memories the same and costs
+    /// nothing.
+    YAML::Node m_memory{YAML::NodeType::Sequence};
+    void adopt(const YAML::Node& n) {
+        m_memory.push_back(n);  // merges n's memory (its document's nodes) into m_memory's, once
+        if (m_lookups.work) ++m_lookups.work->documentsAdopted;
+    }
     /// Lists the includes assembled (a file's bodies: after its parts'),
     /// located where the file's own list (or its include:) was written.
     std::vector<std::pair<YAML::Node, SourceLocation>> m_placed;
@@ -314,10 +337,10 @@ private:
         for (const auto& p : m_placed)
             if (p.first.is(n)) return p.second;
         std::string file = m_file, chain;
-        const auto bucket = m_origin.find(n.Mark().pos);
+        const auto bucket = m_origin.find(nodeKey(n));
         if (bucket != m_origin.end())
             for (const auto& o : bucket->second)
-                if (o.first.is(n)) {
+                if (countComparison(), o.first.is(n)) {
                     file = m_inclusions[o.second].file;
                     chain = m_inclusions[o.second].includedFrom;
                     break;
@@ -325,6 +348,10 @@ private:
         const YAML::Mark m = n.Mark();
         if (m.line < 0) return {file, 1, 1, chain};
         return {file, m.line + 1, m.column + 1, chain};
+    }
+
+    void countComparison() const {
+        if (m_lookups.work) ++m_lookups.work->originComparisons;
     }
 
     SpecError error(const YAML::Node& n, const std::string& key, const std::string& reason) const {
@@ -868,13 +895,15 @@ private:
         if (depth > 10000) return;
         // A node reached again through an alias is registered once: a part
         // file of nested aliases is walked in linear time.
-        auto& bucket = m_origin[n.Mark().pos];
+        auto& bucket = m_origin[nodeKey(n)];
         for (const auto& o : bucket)
-            if (o.first.is(n)) return;
+            if (countComparison(), o.first.is(n)) return;
         bucket.emplace_back(n, inclusion);
+        if (m_lookups.work) ++m_lookups.work->nodesRegistered;
         if (n.IsMap()) {
             for (auto it = n.begin(); it != n.end(); ++it) {
-                m_origin[it->first.Mark().pos].emplace_back(it->first, inclusion);
+                m_origin[nodeKey(it->first)].emplace_back(it->first, inclusion);
+                if (m_lookups.work) ++m_lookups.work->nodesRegistered;
                 registerNodes(it->second, inclusion, depth + 1);
             }
         } else if (n.IsSequence()) {
@@ -914,6 +943,7 @@ private:
             const std::vector<YAML::Node>& items = std::string(key) == "bodies" ? bodies : elements;
             if (items.empty()) continue;
             YAML::Node merged(YAML::NodeType::Sequence);
+            adopt(merged);  // made in this read's memory: the pushes below merge nothing
             for (const auto& item : items) merged.push_back(item);  // the same nodes: locations kept
             SourceLocation at = includeAt;
             if (doc[key]) {
@@ -970,6 +1000,7 @@ private:
         checkModelText(text, file, chain);
         YAML::Node part = loadOneDocument(text, file, chain);
         if (!part || part.IsNull()) throw SpecError({file, 1, 1, chain}, "", "the part file is empty");
+        adopt(part);
         registerNodes(part, inclusion);
         requireMap(part, "<document>");
         checkKeys(part, "", {"format_version", "description", "include", "bodies", "elements"});
@@ -993,6 +1024,9 @@ private:
                 const YAML::Node value = it->second;
                 setValue(part, path, &value, "", whereKey(setNode, it->first));
             }
+            // A path that named no key of the part (`c.damping` for
+            // `elements.c.damping`) created one; it was silently ignored.
+            checkKeys(part, "", {"format_version", "description", "bodies", "elements"});
         }
         if (hasPrefix) {
             const std::string prefix = scalar(prefixNode, "include.prefix");
@@ -1051,10 +1085,10 @@ private:
         NodeMemo memo;
         return occurrencesFrom(root, target, memo);
     }
-    /// Nodes by identity (Node::is), bucketed by their source position.
+    /// Nodes by identity (Node::is), bucketed by nodeKey.
     struct NodeMemo {
-        std::unordered_map<long long, std::vector<std::pair<YAML::Node, int>>> buckets;
-        static long long key(const YAML::Node& n) { return n.Mark().pos; }
+        std::unordered_map<const void*, std::vector<std::pair<YAML::Node, int>>> buckets;
+        static const void* key(const YAML::Node& n) { return nodeKey(n); }
         const int* find(const YAML::Node& n) const {
             const auto it = buckets.find(key(n));
             if (it == buckets.end()) return nullptr;

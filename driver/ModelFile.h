@@ -14,11 +14,20 @@ namespace milldyn {
 /// Finds the schema of an element type or analysis kind; nullptr if unknown.
 using SchemaLookup = std::function<const ElementSchema*(const std::string&)>;
 
+/// Work a read did, counted for the tests of its growth (issue 16 item 10:
+/// include expansion must cost the same per inclusion however many there are).
+struct ReaderWork {
+    long long documentsAdopted = 0;   ///< documents and lists joined into the read's one node memory
+    long long nodesRegistered = 0;    ///< nodes of part files given their file of origin
+    long long originComparisons = 0;  ///< node identity comparisons to find a node's file of origin
+};
+
 struct ModelFileReader {
     SchemaLookup elementSchema;
     std::vector<std::string> elementTypes;   ///< for "did you mean"
     SchemaLookup analysisSchema;
     std::vector<std::string> analysisKinds;  ///< for "did you mean"
+    ReaderWork* work = nullptr;              ///< if set: counts the read's work
 };
 
 /// One `--set path=value` override. Paths address mapping keys by name and

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <mutex>
 #include <sstream>
 
 namespace milldyn {
@@ -34,6 +36,214 @@ void interpolateHermite(double t0, const SimTK::Vector& y0, const SimTK::Vector&
     const double h = t1 - t0, s = (t - t0) / h, s2 = s * s, s3 = s2 * s;
     const double h00 = 2 * s3 - 3 * s2 + 1, h10 = (s3 - 2 * s2 + s) * h, h01 = 3 * s2 - 2 * s3, h11 = (s3 - s2) * h;
     for (int i = 0; i < y.size(); ++i) y[i] = h00 * y0[i] + h10 * f0[i] + h01 * y1[i] + h11 * f1[i];
+}
+
+// CPodes (SUNDIALS) prints its warnings and errors ("[CPODES ERROR] ...")
+// to the FILE* that `stderr` was when the integrator was made, in front of
+// our own one-line message. Every CPodes integrator is made with `stderr`
+// pointing, for that moment, at a sink that keeps the text of the thread
+// that integrates (the one that will catch the failure); a failure folds
+// the last error into its message (cpodesError), everything else is dropped.
+thread_local std::string t_cpodesText;
+
+ssize_t keepCpodesText(void*, const char* buffer, size_t size) {
+    if (t_cpodesText.size() < 4096) t_cpodesText.append(buffer, std::min<size_t>(size, 4096 - t_cpodesText.size()));
+    return static_cast<ssize_t>(size);
+}
+
+FILE* cpodesSink() {
+    static FILE* const sink = [] {
+        cookie_io_functions_t io{nullptr, keepCpodesText, nullptr, nullptr};
+        FILE* f = fopencookie(nullptr, "w", io);
+        if (f) setvbuf(f, nullptr, _IONBF, 0);
+        return f;
+    }();
+    return sink;
+}
+
+std::unique_ptr<SimTK::Integrator> makeCPodes(const SimTK::System& system, SimTK::CPodes::LinearMultistepMethod method,
+                                              SimTK::CPodes::NonlinearSystemIterationType iteration) {
+    static std::mutex swapping;
+    std::lock_guard<std::mutex> lock(swapping);
+    struct Restore {
+        FILE* saved = stderr;
+        ~Restore() { stderr = saved; }
+    } restore;
+    if (FILE* sink = cpodesSink()) stderr = sink;
+    return std::make_unique<SimTK::CPodesIntegrator>(system, method, iteration);
+}
+
+/// The last error CPodes reported on this thread, on one line ("" if none);
+/// clears what was kept.
+std::string cpodesError() {
+    std::string text;
+    text.swap(t_cpodesText);
+    const auto at = text.rfind("ERROR]");
+    if (at == std::string::npos) return "";
+    const auto body = text.find('\n', at);
+    return body == std::string::npos ? "" : simbodyMessage(text.substr(body + 1));
+}
+
+std::string number(double v) {
+    std::ostringstream s;
+    s.precision(4);
+    s << v;
+    return s.str();
+}
+
+/// Which element made a failed integration impossible, from the last
+/// accepted state: a force element whose generalized force is not finite,
+/// or would accelerate a shaft beyond any integration (|F|/M > 1e100 per
+/// s^2: an overflow in the making, such as a motor torque of 1e300 N*m);
+/// "" when no element stands out.
+std::string blameForce(const Scene& scene, const SimTK::State& state) {
+    const SimTK::SimbodyMatterSubsystem& matter = scene.matter();
+    SimTK::State s = state;
+    try {
+        scene.system().realize(s, SimTK::Stage::Velocity);
+    } catch (const std::exception&) {
+        return "";
+    }
+    SimTK::Matrix M;
+    matter.calcM(s, M);
+    std::vector<std::string> names;
+    for (const auto& p : scene.probes()) {
+        const std::string element = p.name.substr(0, p.name.find('.'));
+        if (std::find(names.begin(), names.end(), element) == names.end()) names.push_back(element);
+    }
+    std::string worst;
+    double worstAcceleration = 1e100;
+    for (const auto& name : names) {
+        const SimTK::ForceIndex index = scene.findForce(name);
+        if (!index.isValid()) continue;
+        SimTK::Vector_<SimTK::SpatialVec> bodyForces(matter.getNumBodies(), SimTK::SpatialVec(SimTK::Vec3(0), SimTK::Vec3(0)));
+        SimTK::Vector_<SimTK::Vec3> particleForces(matter.getNumParticles(), SimTK::Vec3(0));
+        SimTK::Vector mobilityForces(s.getNU(), 0.0), generalized;
+        try {
+            // Scene has no const forces(); getForce and its evaluation are const.
+            const SimTK::GeneralForceSubsystem& forces = const_cast<Scene&>(scene).forces();
+            forces.getForce(index).calcForceContribution(s, bodyForces, particleForces, mobilityForces);
+            matter.multiplyBySystemJacobianTranspose(s, bodyForces, generalized);
+        } catch (const std::exception&) {
+            continue;
+        }
+        generalized += mobilityForces;
+        for (int k = 0; k < generalized.size(); ++k) {
+            const double f = generalized[k], a = std::abs(f) / std::max(M(k, k), 1e-300);
+            if (!std::isfinite(f))
+                return "element " + name + ": its force on mobility " + std::to_string(k) + " is not finite";
+            if (a > worstAcceleration) {
+                worstAcceleration = a;
+                worst = "element " + name + ": generalized force " + number(f) + " on mobility " + std::to_string(k) +
+                        " (acceleration " + number(a) + " per s^2) overflows the integration";
+            }
+        }
+    }
+    return worst;
+}
+
+/// The body turning fastest in `s` (what a failure names when no element
+/// stands out).
+std::string fastestBody(const Scene& scene, const SimTK::State& s) {
+    std::string name;
+    double fastest = -1;
+    for (const auto& b : scene.bodies()) {
+        const double u = std::abs(pinSpeed(s, b.mobod));
+        if (!(u <= fastest)) {
+            fastest = u;
+            name = "body " + b.name + " (fastest, " + number(pinSpeed(s, b.mobod)) + " rad/s)";
+        }
+    }
+    return name;
+}
+
+/// The lagged value (kept journal load) that changes most in one more
+/// refresh: what a failure of their fixed point names.
+std::string worstLaggedValue(const Scene& scene, SimTK::State& s) {
+    try {
+        scene.system().realize(s, SimTK::Stage::Acceleration);
+        std::vector<double> now;
+        for (const auto& v : scene.laggedValues()) now.push_back(v.current(s));
+        std::string name;
+        double worst = -1;
+        for (std::size_t i = 0; i < now.size(); ++i) {
+            const double c = scene.laggedValues()[i].keep(s, now[i]);
+            if (!(c <= worst)) {
+                worst = std::isnan(c) ? INFINITY : c;
+                name = scene.laggedValues()[i].name + " (relative change " + number(c) + ")";
+            }
+        }
+        return name;
+    } catch (const std::exception&) {
+        return "";
+    }
+}
+
+/// The body whose acceleration is largest in `s` (realized to Acceleration).
+std::string mostAcceleratedBody(const Scene& scene, const SimTK::State& s) {
+    scene.system().realize(s, SimTK::Stage::Acceleration);
+    std::string name;
+    double largest = -1;
+    for (const auto& b : scene.bodies()) {
+        const double a = std::abs(b.mobod.getOneUDot(s, SimTK::MobilizerUIndex(0)));
+        if (!(a <= largest)) {
+            largest = a;
+            name = "body " + b.name + " (acceleration " + number(a) + " rad/s^2)";
+        }
+    }
+    return name;
+}
+
+/// An integrator's exception as one line: first what failed (an element
+/// whose force overflows, else the fastest body) and the simulated time,
+/// then the integrator's and CPodes' own words.
+AnalysisError integrationFailure(const Scene& scene, const std::string& integrator, const SimTK::State& lastAccepted,
+                                 const std::string& what) {
+    const std::string cpodes = cpodesError();
+    const std::string blamed = blameForce(scene, lastAccepted);
+    const std::string head = (blamed.empty() ? fastestBody(scene, lastAccepted) : blamed) + " at " +
+                             timeText(lastAccepted.getTime());
+    // The integrator's own text only when no element explains it: an
+    // overflowing motor torque is not "Inertia matrix contains a NaN".
+    std::string detail = "integrator " + integrator + " failed";
+    if (blamed.empty()) detail += ": " + simbodyMessage(what);
+    if (!cpodes.empty()) detail += "; CPodes: " + cpodes;
+    return AnalysisError(head + " (" + detail + ")");
+}
+
+/// Stops a run whose steps have become so small that its end is beyond
+/// reach (issue 16 item 11: a 1e30 N*m/rad coupling under CPodes took steps
+/// of about 1e-17 s and ran on for ever, each step a return of its own so
+/// that the internal step limit never struck): checked every
+/// kStepCheckInterval accepted steps, from the run's average step.
+constexpr long kStepCheckInterval = 20000;
+constexpr double kMaxProjectedSteps = 1e9;
+void checkStepRate(const Scene& scene, const std::string& integrator, const SimTK::State& s, double t0, long accepted,
+                   double endTime) {
+    const double h = (s.getTime() - t0) / double(accepted);
+    const double remaining = (endTime - s.getTime()) / h;
+    if (!(remaining > kMaxProjectedSteps)) return;
+    // An element whose force overflows (CPodes then "continues anyway"
+    // with steps of h = 0) is the reason, not the stiffness.
+    const std::string blamed = blameForce(scene, s);
+    if (!blamed.empty())
+        throw AnalysisError(blamed + " at " + timeText(s.getTime()) + " (integrator " + integrator + ": " +
+                            std::to_string(accepted) + " steps advanced it by " + number(s.getTime() - t0) + " s)");
+    throw AnalysisError(mostAcceleratedBody(scene, s) + " at " + timeText(s.getTime()) + ": the integrator's " +
+                        std::to_string(accepted) + " steps average " + number(h) + " s, so reaching t = " +
+                        number(endTime) + " s would take " + number(remaining) + " more (more than " +
+                        number(kMaxProjectedSteps) + "): a motion of about " + number(1 / h) +
+                        " rad/s is beyond integration (integrator " + integrator +
+                        "); look for an absurd stiffness or a tiny inertia");
+}
+
+/// A failure of the kept loads' fixed point at the state `s`, naming the
+/// element whose load moved most.
+AnalysisError keptLoadsFailure(const Scene& scene, const SimTK::State& s, const std::string& what) {
+    SimTK::State copy = s;
+    const std::string culprit = worstLaggedValue(scene, copy);
+    return AnalysisError("element " + culprit.substr(0, culprit.find_first_of(". ")) + ": " + what + " at " +
+                         timeText(s.getTime()) + ": " + culprit + " (kept journal loads, iterated at each step end)");
 }
 
 /// Copies every discrete variable (kept journal loads, switch flags) of
@@ -77,9 +287,8 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::System& system, c
     if (name == "RungeKutta3") return std::make_unique<RungeKutta3Integrator>(system);
     if (name == "RungeKutta2") return std::make_unique<RungeKutta2Integrator>(system);
     if (name == "RungeKuttaFeldberg") return std::make_unique<RungeKuttaFeldbergIntegrator>(system);
-    if (name == "CPodes") return std::make_unique<CPodesIntegrator>(system, CPodes::BDF, CPodes::Newton);
-    if (name == "CPodesAdams")
-        return std::make_unique<CPodesIntegrator>(system, CPodes::Adams, CPodes::Functional);
+    if (name == "CPodes") return makeCPodes(system, CPodes::BDF, CPodes::Newton);
+    if (name == "CPodesAdams") return makeCPodes(system, CPodes::Adams, CPodes::Functional);
     if (name == "Verlet") return std::make_unique<VerletIntegrator>(system);
     if (name == "SemiExplicitEuler") return std::make_unique<SemiExplicitEulerIntegrator>(system, kDefaultFixedStep);
     if (name == "SemiExplicitEuler2") return std::make_unique<SemiExplicitEuler2Integrator>(system);
@@ -97,8 +306,21 @@ int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
     // once per configuration, n realizations, and each outer iteration
     // costs one realization for the residuals and one Newton step.
     Eigen::FullPivLU<Eigen::MatrixXd> jacobian;
+    // What a failure names: the unknown or kept load that moved most, and
+    // its element (the part of its name before the dot).
+    auto failure = [&](const std::string& what, double worstResidual, std::size_t worstUnknown) {
+        SimTK::State copy = s;
+        std::string culprit = worstLaggedValue(scene, copy);
+        if (n > 0 && (culprit.empty() || !(worstResidual <= tolerance)))
+            culprit = unknowns[worstUnknown].name + " (relative Newton step " + number(worstResidual) + ")";
+        const std::string element = culprit.substr(0, culprit.find_first_of(". "));
+        return AnalysisError("element " + element + ": " + what + " at " + timeText(s.getTime()) + ": " + culprit +
+                             " (held wall torques and journal loads, solved together at each instant)");
+    };
+    double worstResidual = 0;
+    std::size_t worstUnknown = 0;
     for (int iter = 1; iter <= 100; ++iter) {
-        double worstResidual = 0;
+        worstResidual = 0;
         if (n > 0) {
             Eigen::VectorXd x(n), r0(n);
             system.realize(s, SimTK::Stage::Acceleration);
@@ -122,20 +344,22 @@ int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
                 unknowns[i].set(s, x[i] + dx[i]);
                 // Converged when Newton's correction is round-off on the
                 // torque (or on 1 N*m for a torque that is zero).
-                worstResidual = std::max(worstResidual, std::abs(dx[i]) / std::max(1.0, std::abs(x[i] + dx[i])));
+                const double step = std::abs(dx[i]) / std::max(1.0, std::abs(x[i] + dx[i]));
+                if (!(step <= worstResidual)) {
+                    worstResidual = step;
+                    worstUnknown = i;
+                }
             }
         }
         const double worstChange = scene.laggedValues().empty() ? 0 : refreshLaggedValues(scene, s);
         if (!(worstChange > tolerance) && !(worstResidual > tolerance)) {
             if (!std::isfinite(worstChange) || !std::isfinite(worstResidual))
-                throw AnalysisError("held wall torques or journal loads are not finite at " +
-                                    timeText(s.getTime()) + ", first coordinate " + std::to_string(s.getQ()[0]));
+                throw failure("not finite", worstResidual, worstUnknown);
             system.realize(s, SimTK::Stage::Acceleration);
             return iter;
         }
     }
-    throw AnalysisError("held wall torques and journal loads did not converge in 100 iterations at " +
-                        timeText(s.getTime()) + ", first coordinate " + std::to_string(s.getQ()[0]));
+    throw failure("no convergence in 100 iterations", worstResidual, worstUnknown);
 }
 
 Simulation::Simulation(const Scene& scene, const IntegratorSpec& settings)
@@ -192,7 +416,7 @@ void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
     for (int k = 0; !m_scene.laggedValues().empty(); ++k) {
         const double change = refreshLaggedValues(m_scene, state);
         if (!(change > kLaggedTolerance)) break;
-        if (k >= 50) throw AnalysisError("kept reactions do not converge at the start");
+        if (k >= 50) throw keptLoadsFailure(m_scene, state, "no convergence in 50 iterations");
     }
     m_integrator = makeIntegrator(m_scene.system(), m_settings.name);
     m_integrator->setAccuracy(m_settings.accuracy);
@@ -347,6 +571,8 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
     std::size_t nextSwitch = 0;
 
     long sampleIndex = 1;
+    long accepted = 0;  // steps accepted in this run, for checkStepRate
+    cpodesError();      // drops what CPodes said before (warnings of runs that went on)
     // The last accepted step end: only a watch needs it (a crossing is
     // located from it), and only from the watch's notBefore on. A State copy
     // costs more than a step (58 % of the burr demo's instructions when made
@@ -405,8 +631,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         try {
             status = integ.stepTo(own ? hardStop : std::min(nextSampleTime(), hardStop), hardStop);
         } catch (const std::exception& e) {
-            throw AnalysisError("integrator " + m_settings.name + " failed near " + timeText(integ.getTime()) +
-                                ": " + simbodyMessage(e.what()));
+            throw integrationFailure(m_scene, m_settings.name, integ.getState(), e.what());
         }
         const SimTK::State& s = integ.getState();
         system.realize(s, own ? SimTK::Stage::Acceleration : SimTK::Stage::Velocity);
@@ -428,6 +653,8 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         }
         if (own) emitInterpolated(s.getTime());
         const double nextSample = nextSampleTime();
+        if (!integ.isStateInterpolated() && ++accepted % kStepCheckInterval == 0)
+            checkStepRate(m_scene, m_settings.name, s, t0, accepted, endTime);
         if (!integ.isStateInterpolated()) {
             makeLaggedValuesConsistent();  // may restart: s then is the consistent state
             if (watch && mayWatchNext(integ.getState())) lastStepEnd = integ.getState();
@@ -468,18 +695,15 @@ bool Simulation::makeLaggedValuesConsistent() {
     if (!any) return false;
     // Not interpolated here: the advanced state is the step end.
     SimTK::State& s = m_integrator->updAdvancedState();
-    const double t = s.getTime();
     double change = 0;
     bool changed = false;
     for (int k = 0;; ++k) {
         change = refreshLaggedValues(m_scene, s, true);
         if (!(change > kLaggedTolerance)) break;
         changed = true;
-        if (k >= 50)
-            throw AnalysisError("kept reactions do not converge at " + timeText(t) + " (relative change " +
-                                std::to_string(change) + " after 50 iterations)");
+        if (k >= 50) throw keptLoadsFailure(m_scene, s, "no convergence in 50 iterations");
     }
-    if (!std::isfinite(change)) throw AnalysisError("kept reactions are not finite at " + timeText(t));
+    if (!std::isfinite(change)) throw keptLoadsFailure(m_scene, s, "not finite");
     if (!changed) return false;
     // A discrete change, as an event handler makes: the integrator keeps
     // its step size and restarts its derivative evaluation.

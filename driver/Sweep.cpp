@@ -1,5 +1,7 @@
 #include "driver/Sweep.h"
 
+#include "driver/Api.h"
+
 #include "driver/Simulation.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
@@ -113,7 +115,7 @@ Json runPoint(const SweepPlan& plan, const SweepOptions& options, const Json& sw
     overrides.insert(overrides.end(), mine.begin(), mine.end());
     try {
         const ModelSpec spec = readModelFile(options.model, defaultModelReader(), overrides);
-        const AnalysisResult r = runAnalysis(spec);
+        const AnalysisResult r = runAnalysis(spec, options.cancel ? cancellableProgress(*options.cancel) : ProgressFn());
         Json results = Json::object();
         for (const auto& s : r.results) {
             if (!std::isfinite(s.value))
@@ -128,6 +130,8 @@ Json runPoint(const SweepPlan& plan, const SweepOptions& options, const Json& sw
         j["status"] = started ? "ok" : r.verdict;
         j["diagnostic"] = started ? "" : r.verdictText;
         j["results"] = results;
+    } catch (const RunCancelled&) {
+        throw;  // not a result of the point: the sweep stops
     } catch (const SpecError& e) {
         j["status"] = "bad_input";
         j["diagnostic"] = e.formatted();
@@ -398,6 +402,10 @@ SweepPart runSweepPart(const SweepPlan& plan, const SweepOptions& options,
     auto worker = [&] {
         for (std::size_t t; (t = next++) < todo.size();) {
             const std::size_t k = todo[t];
+            if (options.cancel && options.cancel->cancelled) {
+                next = todo.size();
+                return;
+            }
             try {
                 points[k] = runPoint(plan, options, tag, mine[k]);
                 writeFileAtomically(pointFile(options.outDir, mine[k]), jsonText(points[k]));
@@ -419,6 +427,9 @@ SweepPart runSweepPart(const SweepPlan& plan, const SweepOptions& options,
     worker();
     for (auto& t : threads) t.join();
     if (fatal) std::rethrow_exception(fatal);
+    if (options.cancel && options.cancel->cancelled)
+        throw RunCancelled("sweep cancelled after " + std::to_string(done) + " of " + std::to_string(todo.size()) +
+                           " points (they are kept and resume)");
     summary.run = todo.size();
     SweepPart part;
     part.summary = summary;

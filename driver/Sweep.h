@@ -50,12 +50,19 @@ SweepAxis parseRange(const std::string& text);
 SweepPlan makeLatinHypercube(std::vector<SweepAxis> ranges, std::size_t n, unsigned long seed);
 SweepPlan makeGrid(std::vector<SweepAxis> axes);
 
+struct CancelFlag;
+
 struct SweepOptions {
     std::string model;
     std::vector<Override> baseOverrides;  ///< the user's own --set
     unsigned jobs = 1;
     std::size_t shardIndex = 0, shardCount = 1;  ///< this process runs points with i % count == index
     std::string outDir;
+    /// If set: another thread (Python's Ctrl-C) may set it; every running
+    /// point stops at its next sample, no further point starts, and the
+    /// sweep throws RunCancelled. Finished points stay (they resume); the
+    /// table is not written.
+    CancelFlag* cancel = nullptr;
 };
 
 struct SweepSummary {

@@ -305,17 +305,50 @@ PYBIND11_MODULE(_milldyn, m) {
                       const std::vector<std::string>& grids, const std::vector<std::string>& ranges, std::size_t lhs,
                       unsigned long seed, unsigned jobs, const std::string& outDir) {
         SweepSummary s;
+        SweepOptions options;
         {
             py::gil_scoped_release release;
-            const SweepPlan plan = makeSweepPlan(grids, ranges, lhs, seed);
-            SweepOptions options;
             options.model = model;
             options.baseOverrides = toOverrides(overrides);
             readModel(options.model, options.baseOverrides);  // one error, not one per point
             options.jobs = std::max(1u, jobs);
             options.outDir = outDir;
-            s = runSweep(plan, options);
         }
+        const SweepPlan plan = makeSweepPlan(grids, ranges, lhs, seed);
+        // The sweep runs on a thread of its own while this one, holding the
+        // GIL every 50 ms only, lets Python see Ctrl-C: a signal stops the
+        // running points at their next sample, no further point starts, and
+        // the KeyboardInterrupt is raised once the sweep has stopped (its
+        // finished points kept, as the CLI's SIGINT leaves them).
+        CancelFlag cancel;
+        options.cancel = &cancel;
+        std::exception_ptr failure;
+        std::atomic<bool> finished{false};
+        std::thread worker([&] {
+            try {
+                s = runSweep(plan, options);
+            } catch (...) {
+                failure = std::current_exception();
+            }
+            finished = true;
+        });
+        bool interrupted = false;
+        while (!finished) {
+            {
+                py::gil_scoped_release release;
+                for (int k = 0; k < 50 && !finished; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            }
+            if (!interrupted && PyErr_CheckSignals() != 0) {
+                interrupted = true;  // the Python error (KeyboardInterrupt) stays set until we return
+                cancel.cancelled = true;
+            }
+        }
+        {
+            py::gil_scoped_release release;
+            worker.join();
+        }
+        if (interrupted) throw py::error_already_set();
+        if (failure) std::rethrow_exception(failure);
         py::dict d;
         d["run"] = s.run;
         d["resumed"] = s.resumed;

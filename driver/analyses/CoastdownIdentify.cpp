@@ -12,14 +12,33 @@
 #include "driver/analyses/Analysis.h"
 
 #include <cmath>
+#include <sstream>
 
 namespace milldyn {
 namespace {
+
+std::string sig(double v) {
+    std::ostringstream s;
+    s.precision(6);
+    s << v;
+    return s.str();
+}
+
+/// A coast-down that did not reach its stop within the time allowed: not a
+/// load the drive cannot carry (AnalysisError), so never taken for one.
+class RunoutNotReached : public AnalysisError {
+public:
+    using AnalysisError::AnalysisError;
+};
 
 struct Trial {
     double runoutTime = 0;
     double steadySpeed = 0;  // of the speed body [rad/s]
     double power = 0;        // absorbed by the loads in steady running [W]
+    /// Angular momentum referred to the run-out body at switch-off,
+    /// Σ J_i·w_i·ω_i [N*m*s]: a constant torque Mc alone (on a shaft
+    /// turning at the run-out body's speed) stops it in momentum / Mc.
+    double momentum = 0;
 };
 
 class CoastdownProblem {
@@ -62,6 +81,7 @@ public:
             const double w = pinSpeed(steady, mb) / refSpeed;
             weighted.emplace_back(mb, b.inertia * w);
             norm += b.inertia * w * w;
+            trial.momentum += b.inertia * w * pinSpeed(steady, mb);
         }
         const double stopSpeed = spec.scenario.number("stop_speed");
         Simulation::Watch watch = speedWatch(ref, stopSpeed, 0, m_runoutBody + " comes to rest");
@@ -101,8 +121,10 @@ public:
         m_statistics.stepAttempts += st.stepAttempts;
         ++m_trials;
         if (!stop)
-            throw AnalysisError("coast-down with resistance " + std::to_string(Mc) + " N*m: " + watch.what +
-                                " did not happen within " + std::to_string(endLimit) + " s");
+            throw RunoutNotReached("coast-down with resistance " + sig(Mc) + " N*m: " + watch.what +
+                                   " did not happen within " + sig(endLimit) + " s (" + m_runoutBody +
+                                   " still turns at " + sig(pinSpeed(sim.lastSample(), ref)) +
+                                   " rad/s, from " + sig(refSpeed) + " rad/s at switch-off)");
         trial.runoutTime = *stop;
         return trial;
     }
@@ -114,8 +136,13 @@ public:
         auto g = [&](double Mc, bool& tooHigh) {
             tooHigh = false;
             try {
-                return std::log(simulate(Mc, endLimit, nullptr).runoutTime / target);
-            } catch (const AnalysisError&) {
+                const Trial t = simulate(Mc, endLimit, nullptr);
+                checkReachable(t, Mc, target);
+                return std::log(t.runoutTime / target);
+            } catch (const RunoutNotReached&) {
+                throw;
+            } catch (const AnalysisError& e) {
+                if (std::string(e.what()).rfind(kUnreachable, 0) == 0) throw;
                 // No steady state: the drive cannot carry this load.
                 tooHigh = true;
                 return 0.0;
@@ -152,6 +179,23 @@ public:
         throw AnalysisError("coast-down identification did not converge (last bracket " + std::to_string(lo) +
                             " .. " + std::to_string(hi) + " N*m)");
     }
+
+    /// A run-out longer than the other losses allow (a viscous part, bearing
+    /// friction) is never reached, whatever Mc: the search would shrink Mc
+    /// for ever (issue 16 item 9: > 120 s without an answer). A constant Mc
+    /// alone stops the momentum L in L/Mc, so a target needs Mc ≈ L/target
+    /// or less; when a trial at 1e-3 of that still ends before the target,
+    /// the other losses end the run-out first: refused with the times.
+    static void checkReachable(const Trial& t, double Mc, double target) {
+        const double alone = t.momentum / target;  // Mc that alone would take `target`
+        if (t.runoutTime < target && Mc <= 1e-3 * alone)
+            throw AnalysisError(std::string(kUnreachable) + sig(target) + " s is not reached: with resistance " +
+                                sig(Mc) + " N*m (1/1000 of the " + sig(alone) +
+                                " N*m a constant torque alone would need) the coast-down already ends after " +
+                                sig(t.runoutTime) +
+                                " s; the model's other losses stop it sooner than the measured time");
+    }
+    static constexpr const char* kUnreachable = "coast-down identification: runout_time ";
 
     RunStatistics statistics() const { return m_statistics; }
     int trials() const { return m_trials; }

@@ -11,6 +11,7 @@ import math
 import os
 import signal
 import subprocess
+import sys
 import tempfile
 import threading
 
@@ -328,3 +329,46 @@ def test_a_failed_analysis_raises_with_the_cli_text(tmp_path):
     assert e.value.text == r.stderr.strip()
     assert "not finite" in e.value.reason and "t = " in e.value.reason and "motor_shaft" in e.value.reason
     assert not (tmp_path / "py").exists()
+
+
+def test_sigint_stops_a_sweep_with_keyboard_interrupt(tmp_path):
+    # Issue 16: Ctrl-C during milldyn.sweep() was ignored until every point
+    # had run. In a child Python: SIGINT while the first of three 200 s
+    # points runs must raise KeyboardInterrupt there and then, leave no
+    # table and no temporaries, and keep only finished point files.
+    out = tmp_path / "sweep"
+    code = (
+        "import sys, milldyn\n"
+        "print('started', flush=True)\n"
+        "try:\n"
+        "    milldyn.sweep(milldyn.Model(%r, set=%r), grid={'elements.grinding.constant_torque': ('10 N*m', '12 N*m', 3)},\n"
+        "                  jobs=1, out=%r)\n"
+        "except KeyboardInterrupt:\n"
+        "    print('KeyboardInterrupt', flush=True)\n"
+        "    sys.exit(3)\n"
+        "print('finished', flush=True)\n" % (IDLE, LONG, str(out)))
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(milldyn.__file__)))
+    child = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                             env=env)
+    assert child.stdout.readline().strip() == "started"
+    # Interrupt once the first point is integrating (its directory claimed).
+    for _ in range(600):
+        if (out / "sweep-plan.json").exists():
+            break
+        threading.Event().wait(0.05)
+    threading.Event().wait(0.5)
+    child.send_signal(signal.SIGINT)
+    try:
+        stdout, stderr = child.communicate(timeout=120)  # uninterrupted: three 200 s runs
+    except subprocess.TimeoutExpired:
+        child.kill()
+        child.communicate()
+        pytest.fail("the sweep did not stop on SIGINT")
+    assert child.returncode == 3, stdout + stderr
+    assert "KeyboardInterrupt" in stdout
+    names = os.listdir(out)
+    assert "sweep.csv" not in names
+    assert not [n for n in names if ".tmp." in n or "staging" in n], names
+    points = os.listdir(out / "points")
+    assert not [n for n in points if ".tmp." in n], points
+    assert len(points) < 3

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include <sys/stat.h>
@@ -45,12 +46,14 @@ protected:
     /// semi-explicit Euler at 10 ms diverges within a few steps
     /// (tests/driver/DivergenceTest.cpp), an error-controlled integrator
     /// takes millions of steps.
-    fs::path stiffPair(const std::string& file, const std::string& integrator, const std::string& endTime) const {
+    fs::path stiffPair(const std::string& file, const std::string& integrator, const std::string& endTime,
+                       const std::string& stiffness = "1e9 N*m/rad") const {
         const fs::path model = m_dir / file;
         std::ofstream(model) << "format_version: 1\nname: stiff\nbodies:\n"
                                 "  - {name: a, inertia: 0.01 kg*m^2, joint: {type: pin}, initial_angle: 0.001 rad}\n"
                                 "  - {name: b, inertia: 0.01 kg*m^2, joint: {type: pin}}\n"
-                                "elements:\n  - {type: TorsionalCoupling, name: shaft, bodies: [a, b], stiffness: 1e9 N*m/rad}\n"
+                                "elements:\n  - {type: TorsionalCoupling, name: shaft, bodies: [a, b], stiffness: "
+                             << stiffness << "}\n"
                                 "scenario: {analysis: transient, initial_state: file, end_time: "
                              << endTime << "}\nintegrator: " << integrator
                              << "\noutputs: {sample_interval: 1 ms, plots: false}\n";
@@ -112,7 +115,8 @@ TEST_F(ReliabilityCli, FailedRunLeavesThePreviousSetUntouched) {
 // SIGTERM left *.tmp.* files; Ctrl-C during plotting was ignored (exit 0).
 TEST_F(ReliabilityCli, SigtermEndsTheRunNonZeroWithoutTemporaries) {
     // Still going after 1 s: millions of steps.
-    const fs::path model = stiffPair("stiff.yaml", "{name: RungeKuttaMerson}", "1000 s");
+    // (100 s: within the projected-step bound of Simulation, unlike 1000 s.)
+    const fs::path model = stiffPair("stiff.yaml", "{name: RungeKuttaMerson}", "100 s");
     const std::string out = (m_dir / "o").string();
     const int code = killedAfter("", "run " + model.string() + " --out " + out, "TERM", 1.0);
     EXPECT_EQ(code, 128 + 15);
@@ -179,6 +183,78 @@ TEST_F(ReliabilityCli, GridTakesDecimalNumbersOnly) {
                                (m_dir / "s").string());
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_NE(r.err.find("'0x10' is not a number"), std::string::npos) << r.err;
+}
+
+// Issue 16 item 11: an exit-1 message is one line, first naming the element
+// or body and the simulated time; CPodes' own "[CPODES ERROR]" text is not
+// printed in front of it.
+static std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);)
+        if (!l.empty()) out.push_back(l);
+    return out;
+}
+
+// A motor torque of 1e300 N*m overflowed the motion within the first step;
+// the run said "Inertia matrix contains a NaN" after CPodes' chatter.
+TEST_F(ReliabilityCli, MotorTorqueOverflowNamesTheMotorInOneLine) {
+    const auto r = run("", "run " + kModel + " --set 'elements.motor.rated_torque=1e300 N*m' --integrator CPodes "
+                           "--end-time '0.1 s' --set outputs.plots=false --out " + (m_dir / "o").string());
+    EXPECT_EQ(r.code, 1) << r.err;
+    const auto l = lines(r.err);
+    ASSERT_EQ(l.size(), 1u) << r.err;
+    EXPECT_NE(l[0].find("element motor: "), std::string::npos) << r.err;
+    EXPECT_NE(l[0].find("at t = 0 s"), std::string::npos) << r.err;
+    EXPECT_EQ(l[0].find("Inertia matrix contains a NaN"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("[CPODES"), std::string::npos) << r.err;
+}
+
+// A 1e30 N*m/rad coupling under CPodes took steps of about 1e-17 s, each
+// returned on its own, so the internal step limit never struck: it ran for
+// more than 100 s. It now stops once its steps cannot reach the end.
+TEST_F(ReliabilityCli, AbsurdStiffnessStopsWithADiagnosticNotForever) {
+    const fs::path model = stiffPair("absurd.yaml", "{name: CPodes}", "5 s", "1e30 N*m/rad");
+    const auto r = run("", "run " + model.string() + " --out " + (m_dir / "o").string());
+    EXPECT_EQ(r.code, 1) << r.err;
+    const auto l = lines(r.err);
+    ASSERT_EQ(l.size(), 1u) << r.err;
+    EXPECT_NE(l[0].find("body "), std::string::npos) << r.err;
+    EXPECT_NE(l[0].find("beyond integration"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("[CPODES"), std::string::npos) << r.err;
+}
+
+// The held-charge/journal fixed point of a kinetostatic instant failed with
+// "held wall torques or journal loads are not finite at t = 0 s, first
+// coordinate ...": no element named. Journals of 20 m at friction 1 make it
+// diverge.
+TEST_F(ReliabilityCli, KeptLoadFailureNamesTheElement) {
+    std::string sets = " --set fidelity.level=held_charge --set 'scenario.carrier_speed=10 rad/s'";
+    for (const char* j : {"A", "B1", "B2"})
+        sets += std::string(" --set elements.friction_") + j + ".friction_coefficient=1 --set 'elements.friction_" + j +
+                ".journal_diameter=20 m'";
+    const auto r = run("", "run " + std::string(MILLDYN_SOURCE_DIR) + "/models/planetary_gear_100x200.yaml" + sets +
+                               " --set outputs.plots=false --out " + (m_dir / "o").string());
+    EXPECT_EQ(r.code, 1) << r.err;
+    const auto l = lines(r.err);
+    ASSERT_EQ(l.size(), 1u) << r.err;
+    EXPECT_NE(l[0].find("element charge"), std::string::npos) << r.err;
+    EXPECT_NE(l[0].find("at t = 0 s"), std::string::npos) << r.err;
+}
+
+// Issue 16 item 9: a run-out longer than the model's other losses allow
+// (here a viscous part of the resistance) was searched for without end
+// (> 120 s); it is refused, naming both times.
+TEST_F(ReliabilityCli, UnreachableRunoutTimeIsRefused) {
+    const std::string model = std::string(MILLDYN_SOURCE_DIR) + "/models/burr_mill_5p5kW_identify.yaml";
+    const auto r = run("", "run " + model + " --set 'scenario.runout_time=100 s' "
+                           "--set 'elements.grinding.viscous_coefficient=0.5 N*m*s/rad' --set outputs.plots=false --out " +
+                           (m_dir / "o").string());
+    EXPECT_EQ(r.code, 1) << r.err;
+    const auto l = lines(r.err);
+    ASSERT_EQ(l.size(), 1u) << r.err;
+    EXPECT_NE(l[0].find("runout_time 100 s is not reached"), std::string::npos) << r.err;
+    EXPECT_NE(l[0].find("the coast-down already ends after"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -287,6 +287,74 @@ TEST(ModelFileReading, AliasBombInAPartFileIsRegisteredInLinearTime) {
     }
 }
 
+// Item 10: one part included N times with prefixes took O(N^2) (N = 1000:
+// 26.7 s): yaml-cpp re-merged whole node memories at every join, and a
+// node's file of origin was looked up among every inclusion's node at its
+// byte offset. The work of a read is counted (not timed): per inclusion it
+// must be the same for N = 2000 as for N = 250.
+TEST(ModelFileReading, IncludeExpansionCostsTheSamePerInclusion) {
+    const std::string dir = freshDir("include-growth");
+    fs::create_directories(dir);
+    std::ofstream(dir + "/part.yaml")
+        << "format_version: 1\nbodies:\n"
+           "  - {name: a, inertia: 1 kg*m^2, joint: {type: pin}}\n"
+           "  - {name: b, inertia: 2 kg*m^2, joint: {type: pin}}\n"
+           "elements:\n"
+           "  - {type: TorsionalCoupling, name: c, bodies: [a, b], stiffness: 1000 N*m/rad, damping: 1 N*m*s/rad}\n";
+    auto readWith = [&](int n) {
+        std::ostringstream top;
+        top << "format_version: 1\nname: many\ninclude:\n";
+        for (int i = 0; i < n; ++i) top << "  - {file: part.yaml, prefix: p" << i << "_, set: {elements.c.damping: 2 N*m*s/rad}}\n";
+        top << "scenario: {analysis: linearize}\n";
+        const std::string file = dir + "/top_" + std::to_string(n) + ".yaml";
+        std::ofstream(file) << top.str();
+        ReaderWork work;
+        ModelFileReader reader = defaultModelReader();
+        reader.work = &work;
+        const ModelSpec spec = readModelFile(file, reader);
+        EXPECT_EQ(spec.elements.size(), static_cast<std::size_t>(n));
+        EXPECT_EQ(spec.bodies.size(), static_cast<std::size_t>(2 * n));
+        EXPECT_EQ(spec.elements.back().name, "p" + std::to_string(n - 1) + "_c");
+        EXPECT_EQ(spec.elements.back().params.at("damping").number, 2.0);
+        // The model, each part, and the two lists assembled.
+        EXPECT_EQ(work.documentsAdopted, n + 3);
+        return work;
+    };
+    const ReaderWork small = readWith(250), large = readWith(2000);
+    EXPECT_EQ(large.nodesRegistered, 8 * small.nodesRegistered);
+    const double perSmall = static_cast<double>(small.originComparisons) / 250;
+    const double perLarge = static_cast<double>(large.originComparisons) / 2000;
+    EXPECT_GT(perSmall, 0);
+    // Linear: the same per inclusion (a quadratic lookup grows 8-fold here).
+    EXPECT_LE(perLarge, 1.1 * perSmall) << small.originComparisons << " vs " << large.originComparisons;
+
+    // A bad value in the last inclusion is still located in the part file.
+    std::ofstream(dir + "/bad.yaml") << "format_version: 1\nname: many\ninclude:\n"
+                                     << "  - {file: part.yaml, prefix: q_}\n"
+                                     << "  - {file: part.yaml, prefix: r_, set: {elements.c.stiffness: -1 N*m/rad}}\n"
+                                     << "scenario: {analysis: linearize}\n";
+    try {
+        readModelFile(dir + "/bad.yaml", defaultModelReader());
+        ADD_FAILURE() << "accepted a negative stiffness";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.where().file, dir + "/bad.yaml") << e.formatted();
+        EXPECT_EQ(e.where().line, 5) << e.formatted();
+    }
+    // A set: path that names no key of the part created a key the reader
+    // then never looked at: the value was silently ignored.
+    std::ofstream(dir + "/unknown.yaml") << "format_version: 1\nname: x\ninclude:\n"
+                                         << "  - {file: part.yaml, prefix: q_, set: {c.damping: 2 N*m*s/rad}}\n"
+                                         << "scenario: {analysis: linearize}\n";
+    try {
+        readModelFile(dir + "/unknown.yaml", defaultModelReader());
+        ADD_FAILURE() << "accepted a set: path that names nothing";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.where().file, dir + "/unknown.yaml") << e.formatted();
+        EXPECT_EQ(e.where().line, 4) << e.formatted();
+        EXPECT_TRUE(contains(e.what(), "unknown key 'c'")) << e.formatted();
+    }
+}
+
 // scene_build_fuzz finding: on this malformed text YAML::LoadAll (used to
 // detect a second document) never returned, adding empty documents until
 // memory ran out. It must end in a SpecError.
