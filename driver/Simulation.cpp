@@ -534,6 +534,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         if (watch && s.getTime() >= watch->notBefore) {
             const double value = watched(s);
             if (lastWatch > 0 && value <= 0) {
+                system.realize(lastStepEnd, SimTK::Stage::Velocity);  // the watch's stage, after rememberWatchStart
                 m_crossingSample = locateCrossing(lastStepEnd, s.getTime(), *watch);
                 const SimTK::State& crossing = m_crossingSample;
                 if (own) emitInterpolated(crossing.getTime());
