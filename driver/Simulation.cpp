@@ -26,6 +26,16 @@ constexpr int kInternalStepLimit = 10'000'000;
 // Relative change of kept reactions (iterated journal loads) that ends
 // their iteration at a step end.
 constexpr double kLaggedTolerance = 1e-12;
+// InstantSolver: the solutions an instant's start is extrapolated from (a
+// quintic through six; on the planetary turn at 721 angles, converging to
+// the full tolerance, 3 gave 3.05 realizations per configuration and 6
+// gave 2.25; 2.42 with the tenth below), and the share of the
+// tolerance its last iterate must meet: the quasi-Newton iterate is only as
+// close to the solution as its last change, where the substitution it
+// replaces ended one sweep closer (a contraction of ~2e-3); at a tenth the
+// outputs match the substitution's to 1e-13 (docs/benchmarks.md).
+constexpr std::size_t kInstantHistory = 6;
+constexpr double kInstantMargin = 0.1;
 // Fixed-step integrators need a step; used when max_step is not given [s].
 constexpr double kDefaultFixedStep = 1e-4;
 
@@ -296,70 +306,174 @@ std::unique_ptr<SimTK::Integrator> makeIntegrator(const SimTK::System& system, c
     throw std::invalid_argument("unknown integrator '" + name + "'");
 }
 
-int solveInstant(const Scene& scene, SimTK::State& s, double tolerance) {
-    const SimTK::MultibodySystem& system = scene.system();
-    const auto& unknowns = scene.kinetostaticUnknowns();
+void InstantSolver::write(SimTK::State& s, const Eigen::VectorXd& z) const {
+    const auto& unknowns = m_scene.kinetostaticUnknowns();
+    const auto& lagged = m_scene.laggedValues();
     const std::size_t n = unknowns.size();
-    // The residuals (accelerations) are linear in the torques, with a
-    // Jacobian set by the configuration alone (mass matrix and constraints;
-    // the journals' kept loads only shift the residuals): it is computed
-    // once per configuration, n realizations, and each outer iteration
-    // costs one realization for the residuals and one Newton step.
-    Eigen::FullPivLU<Eigen::MatrixXd> jacobian;
-    // What a failure names: the unknown or kept load that moved most, and
-    // its element (the part of its name before the dot).
-    auto failure = [&](const std::string& what, double worstResidual, std::size_t worstUnknown) {
-        SimTK::State copy = s;
-        std::string culprit = worstLaggedValue(scene, copy);
-        if (n > 0 && (culprit.empty() || !(worstResidual <= tolerance)))
-            culprit = unknowns[worstUnknown].name + " (relative Newton step " + number(worstResidual) + ")";
+    for (std::size_t i = 0; i < n; ++i) unknowns[i].set(s, z[i]);
+    for (std::size_t j = 0; j < lagged.size(); ++j) lagged[j].keep(s, z[n + j]);
+}
+
+Eigen::VectorXd InstantSolver::evaluate(SimTK::State& s, const Eigen::VectorXd& z, Eigen::VectorXd& current) const {
+    const auto& unknowns = m_scene.kinetostaticUnknowns();
+    const auto& lagged = m_scene.laggedValues();
+    const std::size_t n = unknowns.size(), m = lagged.size();
+    write(s, z);
+    m_scene.system().realize(s, SimTK::Stage::Acceleration);
+    Eigen::VectorXd g(n + m);
+    current.resize(m);
+    for (std::size_t i = 0; i < n; ++i) g[i] = unknowns[i].residual(s);
+    for (std::size_t j = 0; j < m; ++j) {
+        current[j] = lagged[j].current(s);
+        g[n + j] = current[j] - z[n + j];
+    }
+    return g;
+}
+
+void InstantSolver::makeJacobian(SimTK::State& s, const Eigen::VectorXd& z, const Eigen::VectorXd& g) {
+    const Eigen::Index size = z.size();
+    m_jacobian.setZero(size, size);
+    Eigen::VectorXd current;
+    for (Eigen::Index k = 0; k < size; ++k) {
+        if (m_discrete[k]) continue;
+        // The residuals are linear in the torques; the kept loads enter
+        // through a reaction's magnitude, smooth away from zero.
+        const double h = 1e-3 * std::max(1.0, std::abs(z[k]));
+        Eigen::VectorXd zk = z;
+        zk[k] += h;
+        m_jacobian.col(k) = (evaluate(s, zk, current) - g) / h;
+    }
+    m_haveJacobian = true;
+}
+
+int InstantSolver::solve(SimTK::State& s, double tolerance) {
+    const auto& unknowns = m_scene.kinetostaticUnknowns();
+    const auto& lagged = m_scene.laggedValues();
+    const std::size_t n = unknowns.size(), m = lagged.size();
+    const Eigen::Index size = static_cast<Eigen::Index>(n + m);
+    const SimTK::MultibodySystem& system = m_scene.system();
+    if (size == 0) {
+        system.realize(s, SimTK::Stage::Acceleration);
+        return 1;
+    }
+    int iter = 0;
+    Eigen::VectorXd z(size), current;
+    if (m_history.empty()) {
+        // The first instant: the torques in the state and, for the kept
+        // values, one substitution sweep.
+        for (std::size_t i = 0; i < n; ++i) z[i] = unknowns[i].get(s);
+        m_discrete.assign(size, false);
+        if (m > 0) {
+            system.realize(s, SimTK::Stage::Acceleration);
+            ++iter;
+            for (std::size_t j = 0; j < m; ++j) {
+                z[n + j] = lagged[j].current(s);
+                const double v = z[n + j];
+                m_discrete[n + j] = v == -1.0 || v == 0.0 || v == 1.0;
+            }
+        }
+    } else {
+        // The last solutions extrapolated by the polynomial through them
+        // (equally spaced instants): z = sum_k (-1)^(k+1) C(p, k) h[-k].
+        const auto& h = m_history;
+        const int p = static_cast<int>(h.size());
+        z.setZero();
+        double binomial = 1;
+        for (int k = 1; k <= p; ++k) {
+            binomial = binomial * (p - k + 1) / k;
+            z += (k % 2 == 1 ? binomial : -binomial) * h[p - k];
+        }
+        for (Eigen::Index i = 0; i < size; ++i)
+            if (m_discrete[i]) z[i] = h.back()[i];
+    }
+    // A discrete value: row and column -e_k, so Newton's correction is the
+    // substitution (kept = current) and the others do not see it.
+    auto maskDiscrete = [&] {
+        for (Eigen::Index k = 0; k < size; ++k)
+            if (m_discrete[k]) {
+                m_jacobian.row(k).setZero();
+                m_jacobian.col(k).setZero();
+                m_jacobian(k, k) = -1;
+            }
+    };
+    // What a failure names: the unknown or kept load that is worst (not
+    // finite, or moving most), and its element (the part before the dot).
+    auto failure = [&](const std::string& what, const Eigen::VectorXd& residuals, const Eigen::VectorXd& step) {
+        std::string culprit;
+        double worst = -1;
+        for (Eigen::Index k = 0; k < size; ++k) {
+            const std::size_t i = static_cast<std::size_t>(k);
+            const bool isTorque = i < n;
+            double measure = residuals[k];
+            if (isTorque && step.size() == size) measure = step[k];
+            if (!isTorque) measure /= std::max(std::abs(current.size() > 0 ? current[i - n] : 0.0), 1e-300);
+            measure = std::isfinite(measure) ? std::abs(measure) : INFINITY;
+            if (measure > worst) {
+                worst = measure;
+                culprit = isTorque ? unknowns[i].name : lagged[i - n].name;
+            }
+        }
         const std::string element = culprit.substr(0, culprit.find_first_of(". "));
         return AnalysisError("element " + element + ": " + what + " at " + timeText(s.getTime()) + ": " + culprit +
-                             " (held wall torques and journal loads, solved together at each instant)");
+                             " (relative residual " + number(worst) +
+                             "; held wall torques and journal loads, solved together at each instant)");
     };
-    double worstResidual = 0;
-    std::size_t worstUnknown = 0;
-    for (int iter = 1; iter <= 100; ++iter) {
-        worstResidual = 0;
-        if (n > 0) {
-            Eigen::VectorXd x(n), r0(n);
-            system.realize(s, SimTK::Stage::Acceleration);
-            for (std::size_t i = 0; i < n; ++i) {
-                x[i] = unknowns[i].get(s);
-                r0[i] = unknowns[i].residual(s);
-            }
-            if (iter == 1) {
-                Eigen::MatrixXd J(n, n);
-                for (std::size_t j = 0; j < n; ++j) {
-                    const double h = 1e-3 * std::max(1.0, std::abs(x[j]));
-                    unknowns[j].set(s, x[j] + h);
-                    system.realize(s, SimTK::Stage::Acceleration);
-                    for (std::size_t i = 0; i < n; ++i) J(i, j) = (unknowns[i].residual(s) - r0[i]) / h;
-                    unknowns[j].set(s, x[j]);
-                }
-                jacobian.compute(J);
-            }
-            const Eigen::VectorXd dx = jacobian.solve(-r0);
-            for (std::size_t i = 0; i < n; ++i) {
-                unknowns[i].set(s, x[i] + dx[i]);
-                // Converged when Newton's correction is round-off on the
-                // torque (or on 1 N*m for a torque that is zero).
-                const double step = std::abs(dx[i]) / std::max(1.0, std::abs(x[i] + dx[i]));
-                if (!(step <= worstResidual)) {
-                    worstResidual = step;
-                    worstUnknown = i;
-                }
-            }
+    Eigen::VectorXd g = evaluate(s, z, current);
+    ++iter;
+    bool realizedAtZ = true;
+    for (;;) {
+        if (!g.allFinite()) throw failure("not finite", g, Eigen::VectorXd());
+        // Converged kept values need no Jacobian (the torques do).
+        double worstChange = 0;
+        for (std::size_t j = 0; j < m; ++j)
+            worstChange = std::max(worstChange, std::abs(g[n + j]) / std::max(std::abs(current[j]), 1e-300));
+        if (!m_haveJacobian && (n > 0 || worstChange > 0)) {
+            makeJacobian(s, z, g);
+            maskDiscrete();
+            realizedAtZ = false;
         }
-        const double worstChange = scene.laggedValues().empty() ? 0 : refreshLaggedValues(scene, s);
-        if (!(worstChange > tolerance) && !(worstResidual > tolerance)) {
-            if (!std::isfinite(worstChange) || !std::isfinite(worstResidual))
-                throw failure("not finite", worstResidual, worstUnknown);
-            system.realize(s, SimTK::Stage::Acceleration);
+        Eigen::VectorXd dz = Eigen::VectorXd::Zero(size);
+        if (m_haveJacobian) {
+            Eigen::FullPivLU<Eigen::MatrixXd> lu(m_jacobian);
+            if (!lu.isInvertible()) {
+                makeJacobian(s, z, g);
+                maskDiscrete();
+                realizedAtZ = false;
+                lu.compute(m_jacobian);
+            }
+            dz = lu.solve(-g);
+        }
+        // Converged when Newton's correction is round-off on the torque (or
+        // on 1 N*m for a torque that is zero) and the kept values are what
+        // the realized state says.
+        double worstResidual = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            worstResidual = std::max(worstResidual, std::abs(dz[i]) / std::max(1.0, std::abs(z[i] + dz[i])));
+        if (!(worstChange > kInstantMargin * tolerance) && !(worstResidual > kInstantMargin * tolerance)) {
+            if (!realizedAtZ) {
+                g = evaluate(s, z, current);
+                ++iter;
+            }
+            m_history.push_back(z);
+            if (m_history.size() > kInstantHistory) m_history.erase(m_history.begin());
             return iter;
         }
+        if (iter >= 100 || !dz.allFinite()) throw failure("no convergence in 100 iterations", g, dz);
+        // Slow convergence: the kept Jacobian has drifted; make it anew.
+        if (iter % 12 == 0) m_haveJacobian = false;
+        z += dz;
+        Eigen::VectorXd gNew = evaluate(s, z, current);
+        ++iter;
+        realizedAtZ = true;
+        // Broyden's update from this secant: the Jacobian follows the
+        // configuration from instant to instant.
+        const double dd = dz.squaredNorm();
+        if (m_haveJacobian && dd > 0) {
+            m_jacobian += ((gNew - g - m_jacobian * dz) * dz.transpose()) / dd;
+            maskDiscrete();
+        }
+        g = std::move(gNew);
     }
-    throw failure("no convergence in 100 iterations", worstResidual, worstUnknown);
 }
 
 Simulation::Simulation(const Scene& scene, const IntegratorSpec& settings)
@@ -369,6 +483,7 @@ Simulation::Simulation(const Scene& scene, const IntegratorSpec& settings)
 }
 
 void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
+    m_instant.reset();
     m_replay = false;
     m_replayRefused = false;
     m_replayReason.clear();
@@ -484,7 +599,7 @@ void Simulation::placeReplay(double t) {
     }
     for (const auto& init : m_scene.initializers()) init(s);
     const int realizedBefore = system.getNumRealizationsOfThisStage(SimTK::Stage::Acceleration);
-    solveInstant(m_scene, s, kLaggedTolerance);
+    m_instant.solve(s, kLaggedTolerance);
     if (zdotBefore.size() > 0) {
         const SimTK::Vector zdot = s.getZDot();
         s.updZ() += 0.5 * dt * (zdotBefore + zdot);
@@ -576,14 +691,23 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
     // The last accepted step end: only a watch needs it (a crossing is
     // located from it), and only from the watch's notBefore on. A State copy
     // costs more than a step (58 % of the burr demo's instructions when made
-    // at every step; docs/benchmarks.md), so it is made only at the step ends
-    // whose next step may reach notBefore (predicted step size, with a factor
-    // 2 of margin) and later ones. Should a step outgrow that margin, the
-    // crossing is still located from the last copy (an earlier accepted step
-    // end: the same root, re-integrated over a longer span).
+    // at every step; docs/benchmarks.md), so the whole State is copied once
+    // (here, and after a switching restart) and later step ends only take
+    // what integrating changes into it: time, y = {q, u, z} and the discrete
+    // variables (kept loads, switch flags) — rememberWatchStart. That is done
+    // only at the step ends whose next step may reach notBefore (predicted
+    // step size, with a factor 2 of margin) and later ones. Should a step
+    // outgrow that margin, the crossing is still located from the last one
+    // taken (an earlier accepted step end: the same root, re-integrated over
+    // a longer span).
     SimTK::State lastStepEnd = integ.getState();
     auto mayWatchNext = [&](const SimTK::State& st) {
         return st.getTime() + 2 * integ.getPredictedNextStepSize() >= watch->notBefore;
+    };
+    auto rememberWatchStart = [&](const SimTK::State& st) {
+        lastStepEnd.setTime(st.getTime());
+        lastStepEnd.updY() = st.getY();
+        copyDiscreteVariables(st, lastStepEnd);
     };
     auto watched = [watch](const SimTK::State& st) { return watch->value(st) - watch->threshold; };
     double lastWatch = watch ? watched(lastStepEnd) : 0;
@@ -639,6 +763,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         if (watch && s.getTime() >= watch->notBefore) {
             const double value = watched(s);
             if (lastWatch > 0 && value <= 0) {
+                system.realize(lastStepEnd, SimTK::Stage::Velocity);  // the watch's stage, after rememberWatchStart
                 m_crossingSample = locateCrossing(lastStepEnd, s.getTime(), *watch);
                 const SimTK::State& crossing = m_crossingSample;
                 if (own) emitInterpolated(crossing.getTime());
@@ -657,7 +782,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             checkStepRate(m_scene, m_settings.name, s, t0, accepted, endTime);
         if (!integ.isStateInterpolated()) {
             makeLaggedValuesConsistent();  // may restart: s then is the consistent state
-            if (watch && mayWatchNext(integ.getState())) lastStepEnd = integ.getState();
+            if (watch && mayWatchNext(integ.getState())) rememberWatchStart(integ.getState());
         }
 
         const double t = s.getTime();

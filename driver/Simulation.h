@@ -9,11 +9,14 @@
 #include "driver/ModelSpec.h"
 #include "plugins/scene/Scene.h"
 
+#include <Eigen/Dense>
+
 #include <functional>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace milldyn {
 
@@ -38,6 +41,47 @@ struct RunStatistics {
     long realizations = 0;
     long stepAttempts = 0;
     long consistencyRestarts = 0;  ///< restarts after iterating kept reactions
+};
+
+/// Solves a scene's instantaneous unknowns in a state (held charges' wall
+/// torques z_x: their residual accelerations zero; journals' kept reactions
+/// z_L: equal to what the realized state says they are) to the relative
+/// `tolerance`, leaving the state realized to Acceleration at the solution.
+/// Both are one system g(z) = [residuals; current − kept] = 0, solved by a
+/// quasi-Newton iteration with one realization per iteration: its Jacobian
+/// is made by finite differences once (z's n + m columns) and then kept up
+/// to date by Broyden's update from every iteration's secant, across the
+/// instants of a run; each instant starts from the last six solutions
+/// extrapolated (instants equally spaced: kinetostatic angles, replay
+/// samples). A kept value that is −1, 0 or 1 (a breakaway direction) is
+/// iterated by plain substitution, never extrapolated. Converged when every
+/// Newton correction of a torque and every relative change of a kept value
+/// is at most a tenth of `tolerance`; the state is then the one realized
+/// last, so a converged instant costs no realization beyond its iterations
+/// (docs/benchmarks.md, "Kinetostatic throughput").
+class InstantSolver {
+public:
+    explicit InstantSolver(const Scene& scene) : m_scene(scene) {}
+    /// Returns the number of iterations (realizations to Acceleration, but
+    /// for the Jacobian's). Throws AnalysisError if they do not converge.
+    int solve(SimTK::State& s, double tolerance);
+    /// Forgets earlier instants (a new run).
+    void reset() {
+        m_history.clear();
+        m_haveJacobian = false;
+    }
+
+private:
+    const Scene& m_scene;
+    std::vector<Eigen::VectorXd> m_history;  // the last (up to six) solutions, newest last
+    Eigen::MatrixXd m_jacobian;              // dg/dz
+    bool m_haveJacobian = false;
+    std::vector<bool> m_discrete;  // kept values iterated by substitution
+    void write(SimTK::State& s, const Eigen::VectorXd& z) const;
+    /// g at z (writes z into s, realizes it once); `current` gets the kept
+    /// values' current values.
+    Eigen::VectorXd evaluate(SimTK::State& s, const Eigen::VectorXd& z, Eigen::VectorXd& current) const;
+    void makeJacobian(SimTK::State& s, const Eigen::VectorXd& z, const Eigen::VectorXd& g);
 };
 
 class Simulation {
@@ -124,6 +168,7 @@ private:
     SimTK::State locateCrossing(const SimTK::State& before, double tAfter, const Watch& watch);
 
     // Replay (no free degrees of freedom).
+    InstantSolver m_instant{m_scene};  // the samples' instant unknowns
     bool m_replay = false;
     bool m_replayRefused = false;
     std::string m_replayReason;
@@ -141,11 +186,6 @@ private:
 /// Counts mobilities only; Simulation also checks the placement.
 std::string whyNoReplay(const Scene& scene, const SimTK::State& start);
 
-/// Solves a scene's instantaneous unknowns in `s` (held charges' wall
-/// torques by Newton, journals' kept reactions by fixed point) to the
-/// relative `tolerance`, leaving `s` realized to Acceleration; returns the
-/// number of outer iterations. Throws AnalysisError if they do not converge.
-int solveInstant(const Scene& scene, SimTK::State& s, double tolerance);
 
 /// Solves for steady running about the mean load (periodic excitations off
 /// while solving): all accelerations zero and every steady residual of the

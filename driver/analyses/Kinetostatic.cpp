@@ -2,8 +2,9 @@
 // For each carrier angle the state is set (angle, speed, the instant of the
 // drive's law), the elements place what they drive (gears, charges), and
 // one realization gives the drive torque and the reactions. The unknowns
-// of one instant are solved first: held charges' wall torques (Newton) and
-// journals' lagged reactions (fixed point).
+// of one instant are solved first: held charges' wall torques and journals'
+// kept reactions (InstantSolver: quasi-Newton, one realization per
+// iteration, starting from the earlier angles' solutions).
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
@@ -57,10 +58,13 @@ AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress
     // State of its own that takes each configuration's q and u: copying a
     // whole State per angle cost 5 % of the analysis' instructions.
     SimTK::State unit = state;
+    // One solver for all angles: each angle starts from the last ones'
+    // solutions extrapolated, with the Jacobian the earlier angles left.
+    InstantSolver instant(*scene);
     for (int k = 0; k < points; ++k) {
         const double angle = points == 1 ? from : from + (to - from) * k / (points - 1);
         placeMechanism(*scene, carrier.mobod, state, angle, speed);
-        solveInstant(*scene, state, tolerance);
+        instant.solve(state, tolerance);
         unit.setTime(state.getTime());
         unit.updQ() = state.getQ();
         unit.updU() = state.getU();
@@ -73,7 +77,7 @@ AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress
                 throw AnalysisError("kinetostatic: a non-finite output at carrier angle " + std::to_string(angle) +
                                     " rad");
         result.rows.push_back(std::move(row));
-        if (observer) observer(*scene, state, angle);  // realized by solveInstant
+        if (observer) observer(*scene, state, angle);  // realized by the solver
         if (progress) progress(k + 1, points);
     }
     result.statistics.realizations =
