@@ -38,6 +38,11 @@ ShaftBelt::ShaftBelt(const GeneralForceSubsystem& forces, const MobilizedBody& d
         bad("both shafts must be on pins on ground (their pins' locations are the sheave centres)");
     // calcBeltSpans: the driver's sheave in the role of the "fixed" sheave,
     // the driven's in that of the "drum" sheave; it throws when |r1 − r2| > l.
+    const double distance = (pinCentre(driven) - pinCentre(driver)).norm();
+    if (!(std::abs(p.drivenSheaveRadius - p.driverSheaveRadius) < distance))
+        bad("|r2 − r1| = " + std::to_string(std::abs(p.drivenSheaveRadius - p.driverSheaveRadius)) +
+            " m is not below the centre distance " + std::to_string(distance) +
+            " m between the shafts' pins: no open belt");
     m_spans = calcBeltSpans(pinCentre(driver), p.driverSheaveRadius, pinCentre(driven), p.drivenSheaveRadius);
     m_wrap = std::min(m_spans.wrapFixed, m_spans.wrapDrum);
     m_grip = std::exp(p.frictionCoefficient * m_wrap);
