@@ -297,7 +297,7 @@ TEST(ShaftBeltElement, RejectsBadInputAtItsKey) {
     EXPECT_TRUE(test::contains(neg.formatted(), "pretension")) << neg.formatted();
     // outputs.peaks must name an output.
     try {
-        buildScene(test::readText("shaft_belt.yaml", kShaftBeltText, {{"outputs.peaks", "belt.tension_tigth"}}));
+        buildScene(test::readText("shaft_belt.yaml", kShaftBeltText, {{"outputs.peaks", "[belt.tension_tigth]"}}));
         ADD_FAILURE() << "accepted a peak that names no output";
     } catch (const SpecError& e) {
         EXPECT_EQ(e.key(), "outputs.peaks") << e.formatted();
