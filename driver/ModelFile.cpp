@@ -838,7 +838,7 @@ private:
     void readOutputs(const YAML::Node& n, OutputSpec& out) const {
         requireMap(n, "outputs");
         out.where = where(n);
-        checkKeys(n, "outputs.", {"sample_interval", "plots", "columns", "energy_balance"});
+        checkKeys(n, "outputs.", {"sample_interval", "plots", "columns", "energy_balance", "peaks"});
         if (n["sample_interval"]) {
             out.sampleInterval = readNumber(n["sample_interval"], "outputs.sample_interval", "s");
             if (!(out.sampleInterval > 0))
@@ -846,28 +846,30 @@ private:
         }
         if (n["plots"]) out.plots = readBool(n["plots"], "outputs.plots");
         if (n["energy_balance"]) out.energyBalance = readBool(n["energy_balance"], "outputs.energy_balance");
-        if (n["columns"]) {
-            // A list, or (from --set) one value with names separated by commas.
-            const YAML::Node c = n["columns"];
-            if (c.IsScalar()) {
-                std::stringstream names(c.Scalar());
-                for (std::string name; std::getline(names, name, ',');) {
-                    name.erase(0, name.find_first_not_of(' '));
-                    name.erase(name.find_last_not_of(' ') + 1);
-                    if (name.empty()) throw error(c, "outputs.columns", "an empty name between commas");
-                    out.columns.push_back(name);
-                    out.columnWhere.push_back(where(c));
-                }
-            } else {
-                requireList(c, "outputs.columns");
-                for (const auto& item : c) {
-                    out.columns.push_back(scalar(item, "outputs.columns"));
-                    out.columnWhere.push_back(where(item));
-                }
+        if (n["columns"]) readNames(n["columns"], "outputs.columns", out.columns, out.columnWhere);
+        if (n["peaks"]) readNames(n["peaks"], "outputs.peaks", out.peaks, out.peakWhere);
+    }
+
+    /// A list of names, or (from --set) one value with names separated by commas.
+    void readNames(const YAML::Node& c, const std::string& key, std::vector<std::string>& names,
+                   std::vector<SourceLocation>& at) const {
+        if (c.IsScalar()) {
+            std::stringstream list(c.Scalar());
+            for (std::string name; std::getline(list, name, ',');) {
+                name.erase(0, name.find_first_not_of(' '));
+                name.erase(name.find_last_not_of(' ') + 1);
+                if (name.empty()) throw error(c, key, "an empty name between commas");
+                names.push_back(name);
+                at.push_back(where(c));
             }
-            if (out.columns.empty())
-                throw error(c, "outputs.columns", "expected at least one name (leave it out for all)");
+        } else {
+            requireList(c, key);
+            for (const auto& item : c) {
+                names.push_back(scalar(item, key));
+                at.push_back(where(item));
+            }
         }
+        if (names.empty()) throw error(c, key, "expected at least one name (leave it out for all)");
     }
 
     // ------------------------------------------------------------ include:

@@ -58,6 +58,11 @@ struct OutputSpec {
     /// torques) and the bodies' angles and speeds are always kept.
     std::vector<std::string> columns;
     std::vector<SourceLocation> columnWhere;  ///< where each column was named
+    /// `peaks:` outputs whose largest |value| over the run and value at the
+    /// end (before switch-off) the transient summary reports
+    /// (peak.NAME, final.NAME).
+    std::vector<std::string> peaks;
+    std::vector<SourceLocation> peakWhere;
     /// `energy_balance:` build the energy meter for analyses that report
     /// an energy balance (its integrals are states every step carries).
     bool energyBalance = true;

@@ -83,6 +83,18 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
         }
         flowTypes.resize(scene->energyFlows().size(), e.type);
     }
+    // Every peak must name one output: a typo would otherwise drop it silently.
+    const std::vector<std::string>& peaks = spec.outputs.peaks;
+    for (std::size_t i = 0; i < peaks.size(); ++i) {
+        const bool found = std::any_of(scene->probes().begin(), scene->probes().end(),
+                                       [&](const Probe& p) { return p.name == peaks[i]; });
+        if (!found) {
+            std::vector<std::string> names;
+            for (const auto& p : scene->probes()) names.push_back(p.name);
+            throw SpecError(spec.outputs.peakWhere[i], "outputs.peaks",
+                            "no output named '" + peaks[i] + "'" + suggestion(peaks[i], names));
+        }
+    }
     if (!columns.empty()) {
         // Every column must name something: a typo would otherwise drop an
         // output silently.
@@ -100,7 +112,9 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
         // The analyses' summaries read the outputs with a role (drive, load,
         // coupling torques, speeds): those stay whatever the columns say.
         const std::size_t dropped =
-            scene->retainProbes([&](const Probe& p) { return p.role != ProbeRole::Generic || named(p.name); });
+            scene->retainProbes([&](const Probe& p) { return p.role != ProbeRole::Generic || named(p.name) ||
+                                           std::find(peaks.begin(), peaks.end(), p.name) != peaks.end();
+                                });
         if (dropped > 0)
             scene->omit(std::to_string(dropped) + " outputs of built elements", "not named in outputs.columns");
     }

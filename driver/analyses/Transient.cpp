@@ -261,6 +261,11 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     bool windowCopied = false;
     double peakDrive = 0;
     std::vector<double> peakCoupling(scene->probes().size(), 0.0);
+    // outputs.peaks: their largest |value| and their value at the end.
+    std::vector<bool> peakWanted(scene->probes().size(), false);
+    for (std::size_t i = 0; i < scene->probes().size(); ++i)
+        peakWanted[i] = std::find(spec.outputs.peaks.begin(), spec.outputs.peaks.end(), scene->probes()[i].name) !=
+                        spec.outputs.peaks.end();
     auto onSample = [&](const SimTK::State& s) {
         const std::vector<double>& values = sim.probeValues();
         table.record(s, values);
@@ -281,7 +286,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         for (std::size_t i = 0; i < values.size(); ++i) {
             const ProbeRole role = scene->probes()[i].role;
             if (role == ProbeRole::DriveTorque) drive += values[i];
-            if (role == ProbeRole::CouplingTorque) peakCoupling[i] = std::max(peakCoupling[i], std::abs(values[i]));
+            if (role == ProbeRole::CouplingTorque || peakWanted[i])
+                peakCoupling[i] = std::max(peakCoupling[i], std::abs(values[i]));
         }
         peakDrive = std::max(peakDrive, std::abs(drive));
         if (progress) progress(s.getTime(), endTime);
@@ -355,6 +361,15 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
                                           (shaft.empty() ? std::string("its driving shaft") : shaft) +
                                           " (the driving shaft; the driven shaft carries it times the speed ratio)",
                                       shaft});
+        }
+    for (const std::string& name : spec.outputs.peaks)
+        for (std::size_t i = 0; i < scene->probes().size(); ++i) {
+            const Probe& p = scene->probes()[i];
+            if (p.name != name || p.role == ProbeRole::CouplingTorque) continue;
+            result.results.push_back({"peak." + name, peakCoupling[i], p.unit,
+                                      "largest |" + name + "| of the run (outputs.peaks)"});
+            result.results.push_back(
+                {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
         }
     if (start == "rest" && omega > 0 && reached) {
         for (const auto& row : result.rows)

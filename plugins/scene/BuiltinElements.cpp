@@ -13,6 +13,7 @@ void registerCarrierDrive(ElementRegistry& registry);
 void registerJournalFriction(ElementRegistry& registry);
 void registerJointReaction(ElementRegistry& registry);
 void registerBeltDrive(ElementRegistry& registry);
+void registerShaftBelt(ElementRegistry& registry);
 void registerDiscDrag(ElementRegistry& registry);
 void registerFlexibleRotor(ElementRegistry& registry);
 void registerGearPair(ElementRegistry& registry);
@@ -32,6 +33,7 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerJournalFriction(registry);
     registerJointReaction(registry);
     registerBeltDrive(registry);
+    registerShaftBelt(registry);
     registerDiscDrag(registry);
     registerFlexibleRotor(registry);
     registerGearPair(registry);

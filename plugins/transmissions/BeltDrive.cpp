@@ -186,6 +186,35 @@ void RigidBeltConstraint::addInPositionConstraintForces(const State& s, const Ar
 
 // -------------------------------------------------------------- elastic law
 
+BeltSpanForce calcBeltSpanForce(double T0, double k, double c, double E, double xe, double xdot) {
+    BeltSpanForce f;
+    const double yMax = T0 * (E - 1) / (E + 1);
+    const double yStick = k * xe + c * xdot;
+    if (std::abs(yStick) <= yMax) {
+        f.y = yStick;
+    } else {
+        f.slipping = true;
+        f.y = yStick > 0 ? yMax : -yMax;
+        const double xeDot = (f.y - k * xe) / c;
+        f.slipSpeed = xdot - xeDot;
+    }
+    return f;
+}
+
+double calcBeltSpanEnergy(double T0, double k, double xe) {
+    const double a = std::max(0.0, T0 - k * xe), b = std::max(0.0, T0 + k * xe);
+    return (a * a + b * b - 2 * T0 * T0) / (2 * k);
+}
+
+double calcBeltDissipatedPower(double T0, double k, const BeltSpanForce& f, double xe, double xdot) {
+    // Power into the belt from the bodies less the rate of its elastic energy
+    // (the span stretched by x carries T0 + y, the other T0 − y).
+    const double xeDot = xdot - f.slipSpeed;
+    const double in = (std::max(0.0, T0 + f.y) - std::max(0.0, T0 - f.y)) * xdot;
+    const double elastic = (std::max(0.0, T0 + k * xe) - std::max(0.0, T0 - k * xe)) * xeDot;
+    return in - elastic;
+}
+
 ElasticBeltForce::ElasticBeltForce(const GeneralForceSubsystem& forces, const MobilizedBody& carrier,
                                    const MobilizedBody& drum, const BeltDriveParams& p)
     : BeltDrive(carrier, drum, p), m_forces(forces), m_maxY(0) {}
@@ -197,22 +226,14 @@ double ElasticBeltForce::getSlip(const State& s) const { return m_forces.getZ(s)
 void ElasticBeltForce::setSlip(State& s, double slip) const { m_forces.updZ(s)[m_slip] = slip; }
 
 ElasticBeltForce::Tensions ElasticBeltForce::calcTensions(const State& s) const {
+    const BeltSpanForce f = calcBeltSpanForce(m_p.pretension, m_p.spanStiffness, m_p.spanDamping, calcGripRatio(s),
+                                              calcStretch(s), calcFeedRate(s));
     Tensions t;
-    const double T0 = m_p.pretension, k = m_p.spanStiffness, c = m_p.spanDamping;
-    const double E = calcGripRatio(s);
-    const double yMax = T0 * (E - 1) / (E + 1);
-    const double xe = calcStretch(s), xdot = calcFeedRate(s);
-    const double yStick = k * xe + c * xdot;
-    if (std::abs(yStick) <= yMax) {
-        t.y = yStick;
-    } else {
-        t.slipping = true;
-        t.y = yStick > 0 ? yMax : -yMax;
-        const double xeDot = (t.y - k * xe) / c;
-        t.slipSpeed = xdot - xeDot;
-    }
-    t.lead = std::max(0.0, T0 - t.y);
-    t.trail = std::max(0.0, T0 + t.y);
+    t.y = f.y;
+    t.slipping = f.slipping;
+    t.slipSpeed = f.slipSpeed;
+    t.lead = std::max(0.0, m_p.pretension - t.y);
+    t.trail = std::max(0.0, m_p.pretension + t.y);
     return t;
 }
 
@@ -227,19 +248,16 @@ void ElasticBeltForce::calcForce(const State& s, Vector_<SpatialVec>& bodyForces
 }
 
 Real ElasticBeltForce::calcPotentialEnergy(const State& s) const {
-    const double T0 = m_p.pretension, k = m_p.spanStiffness, xe = calcStretch(s);
-    const double lead = std::max(0.0, T0 - k * xe), trail = std::max(0.0, T0 + k * xe);
-    return (lead * lead + trail * trail - 2 * T0 * T0) / (2 * k);
+    return calcBeltSpanEnergy(m_p.pretension, m_p.spanStiffness, calcStretch(s));
 }
 
 double ElasticBeltForce::calcDissipatedPower(const State& s) const {
-    // Power into the belt from the bodies less the rate of its elastic energy.
     const Tensions t = calcTensions(s);
-    const double T0 = m_p.pretension, k = m_p.spanStiffness, xe = calcStretch(s);
-    const double xdot = calcFeedRate(s), xeDot = xdot - t.slipSpeed;
-    const double in = (t.trail - t.lead) * xdot;
-    const double elastic = (-std::max(0.0, T0 - k * xe) + std::max(0.0, T0 + k * xe)) * xeDot;
-    return in - elastic;
+    BeltSpanForce f;
+    f.y = t.y;
+    f.slipSpeed = t.slipSpeed;
+    f.slipping = t.slipping;
+    return calcBeltDissipatedPower(m_p.pretension, m_p.spanStiffness, f, calcStretch(s), calcFeedRate(s));
 }
 
 void ElasticBeltForce::realizeAcceleration(const State& s) const {

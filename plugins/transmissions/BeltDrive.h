@@ -34,6 +34,27 @@ enum class BeltLaw {
     Elastic,  ///< pretension, span stiffness and damping, Euler–Eytelwein slip
 };
 
+/// The elastic span law shared by BeltDrive's Elastic law and ShaftBelt:
+/// each span a spring-damper about the pretension T0, the tension change
+/// y = k_s·x_e + c_s·x' capped by Euler–Eytelwein at
+/// y_max = T0 (E − 1)/(E + 1) (E = e^(μθ) the grip ratio); beyond the cap
+/// the belt slips at s' = x' − (±y_max − k_s x_e)/c_s [m/s].
+struct BeltSpanForce {
+    double y = 0;          ///< span force change [N]: one span T0 + y, the other T0 − y
+    double slipSpeed = 0;  ///< s' [m/s]
+    bool slipping = false;
+};
+BeltSpanForce calcBeltSpanForce(double pretension, double stiffness, double damping, double gripRatio, double stretch,
+                                double feedRate);
+/// Elastic energy of the two spans at stretch x_e, less its value at rest:
+/// Σ max(0, T0 ± k x_e)²/(2k) − T0²/k [J].
+double calcBeltSpanEnergy(double pretension, double stiffness, double stretch);
+/// Power the belt turns into heat [W] >= 0: the power in, ΔT·x' (ΔT the
+/// span tension difference that does work on the feed), less the rate of
+/// the spans' elastic energy (damping plus y_max·|s'| when slipping).
+double calcBeltDissipatedPower(double pretension, double stiffness, const BeltSpanForce& f, double stretch,
+                               double feedRate);
+
 struct BeltDriveParams {
     double fixedSheaveRadius = 0;  ///< r0 [m] > 0, on ground at the carrier axis
     double drumSheaveRadius = 0;   ///< r_A [m] > 0, rigid with the drum

@@ -233,5 +233,77 @@ TEST(BeltDriveElement, BuildsFromAModelFileAndRejectsBadInput) {
     EXPECT_TRUE(test::contains(neg.formatted(), "drum_sheave_radius")) << neg.formatted();
 }
 
+
+// ------------------------------------------------------------- ShaftBelt
+
+const char* kShaftBeltText = R"(format_version: 1
+name: two shafts and a belt
+bodies:
+  - name: a
+    inertia: 0.1 kg*m^2
+    initial_speed: 100 rad/s
+    joint: {type: pin, parent: ground}
+  - name: b
+    inertia: 0.1 kg*m^2
+    joint: {type: pin, parent: ground, location: [0.5 m, 0 m, 0 m]}
+elements:
+  - {type: ShaftBelt, name: belt, driver: a, driven: b, driver_sheave_radius: 0.05 m, driven_sheave_radius: 0.1 m, pretension: 100 N, span_stiffness: 1e5 N/m, span_damping: 50 N*s/m, friction_coefficient: 0.5}
+scenario: {analysis: transient, initial_state: file, end_time: 1 s}
+integrator: {name: RungeKuttaMerson, accuracy: 1e-8}
+outputs: {sample_interval: 1 ms, plots: false, peaks: [belt.tension_tight, belt.slipping, belt.slip]}
+)";
+
+TEST(ShaftBeltElement, SlipsAtTheEulerEytelweinRatioAndKeepsItsEnergy) {
+    // A shaft spinning at 100 rad/s belted to one at rest: the belt slips
+    // until the speeds match the ratio; while it slips T_tight/T_slack is
+    // e^(μθ), θ = π − 2 asin((r2 − r1)/C) on the small sheave.
+    const AnalysisResult r = runAnalysis(test::readText("shaft_belt.yaml", kShaftBeltText, {}));
+    const double E = std::exp(0.5 * (M_PI - 2 * std::asin(0.05 / 0.5)));
+    int slipping = 0;
+    for (std::size_t i = 0; i < r.rows.size(); ++i)
+        if (r.value(i, "belt.slipping") == 1.0) {
+            ++slipping;
+            EXPECT_NEAR(r.value(i, "belt.tension_tight") / r.value(i, "belt.tension_slack"), E, 1e-9 * E);
+            EXPECT_NEAR(r.value(i, "belt.tension_tight") + r.value(i, "belt.tension_slack"), 200.0, 1e-9);
+        }
+    EXPECT_GT(slipping, 10);
+    EXPECT_EQ(r.find("peak.belt.slipping")->value, 1.0);
+    EXPECT_GT(r.find("final.belt.slip")->value, 0.0);  // the driver's sheave ran ahead
+    // The same span force F acts on both sheaves (−r1·F on a, +r2·F on b),
+    // so J_a·ω_a·r2 + J_b·ω_b·r1 is conserved: once the belt grips at
+    // ω_a = 2ω_b, ω_b = 0.1·100·0.1/(0.1·2·0.1 + 0.1·0.05) = 40 rad/s, and the
+    // belt has turned ½·0.1·100² − ½·0.1·(80² + 40²) = 100 J into heat
+    // (the span oscillation left after 0.7 s is within 1e-3).
+    const std::size_t last = r.rows.size() - 1;
+    EXPECT_NEAR(r.value(last, "b.speed"), 40.0, 40e-3);
+    EXPECT_NEAR(r.value(last, "a.speed"), 2 * r.value(last, "b.speed"), 80e-3);
+    EXPECT_NEAR(r.find("energy.belt")->value, 100.0, 0.1);
+    EXPECT_LT(std::abs(r.find("energy_balance_relative")->value), 1e-6);
+}
+
+TEST(ShaftBeltElement, RejectsBadInputAtItsKey) {
+    const SpecError same = test::readErrorOf("shaft_belt.yaml", kShaftBeltText, {{"elements.belt.driven", "a"}});
+    EXPECT_EQ(same.key(), "belt.driven") << same.formatted();
+    try {
+        buildScene(test::readText("shaft_belt.yaml", kShaftBeltText, {{"elements.belt.driven_sheave_radius", "0.6 m"}}));
+        ADD_FAILURE() << "accepted sheaves wider apart than the centre distance";
+    } catch (const SpecError& e) {
+        EXPECT_TRUE(test::contains(e.formatted(), "belt.driven_sheave_radius")) << e.formatted();
+        EXPECT_TRUE(test::contains(e.what(), "no open belt")) << e.what();
+    }
+    const std::string onA = test::replacedIn(kShaftBeltText, "parent: ground, location", "parent: a, location");
+    EXPECT_THROW(buildScene(test::readText("shaft_belt.yaml", onA, {})), SpecError);
+    const SpecError neg = test::readErrorOf("shaft_belt.yaml", kShaftBeltText, {{"elements.belt.pretension", "-1 N"}});
+    EXPECT_TRUE(test::contains(neg.formatted(), "pretension")) << neg.formatted();
+    // outputs.peaks must name an output.
+    try {
+        buildScene(test::readText("shaft_belt.yaml", kShaftBeltText, {{"outputs.peaks", "[belt.tension_tigth]"}}));
+        ADD_FAILURE() << "accepted a peak that names no output";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.key(), "outputs.peaks") << e.formatted();
+        EXPECT_TRUE(test::contains(e.what(), "belt.tension_tight")) << e.what();  // the suggestion
+    }
+}
+
 }  // namespace
 }  // namespace milldyn

@@ -545,6 +545,12 @@ void simulatePlanetaryGearStart(int sizeIndex, double interval, std::vector<doub
     }
 }
 
+oracles::PlanetaryGearParameters planetaryGearOracleParameters(int size, double friction) {
+    return oracleParameters(kSizes[size], friction);
+}
+
+double planetaryGearSteadyRate(int size) { return steadyRate(kSizes[size]); }
+
 std::vector<ValidationRow> planetaryGearCases(const std::string& filter) {
     std::vector<ValidationRow> rows;
     for (const Size& size : kSizes) {

@@ -4,6 +4,8 @@
 // names of the Fig. 10 cases, and the oracle's curves with the cases'
 // parameters.
 
+#include "validation/oracles/PlanetaryGearOracle.h"
+
 #include <string>
 #include <vector>
 
@@ -11,6 +13,12 @@ namespace milldyn {
 
 /// The two sizes of the cases: 0 = 100 x 200 mm, 1 = 500 x 1000 mm.
 std::string planetaryGearSizeTag(int size);
+/// The oracle's parameters of one size (docs/planetary_gear.md's free
+/// parameters; the carrier friction read as the whole load on d_A/2).
+oracles::PlanetaryGearParameters planetaryGearOracleParameters(int size, double friction);
+/// The steady carrier speed of one size (750 rpm for the small mill, the
+/// large at equal centrifugal factor) [rad/s].
+double planetaryGearSteadyRate(int size);
 
 /// Reading (a) of Fig. 10: the acceleration times t_p [s] of the cases and
 /// the quantities of their rows (initial torque, and its ratio to t_p → ∞).

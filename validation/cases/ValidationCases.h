@@ -57,5 +57,9 @@ std::vector<ValidationRow> planetaryBeltCases(const std::string& filter);
 std::vector<ValidationRow> beadMillCases(const std::string& filter);
 std::vector<ValidationRow> tumblingMillCases(const std::string& filter);
 std::vector<ValidationRow> startCases(const std::string& filter);
+/// Whole machines started by their motor: seed 000's planetary mill through
+/// a slipping V-belt, the burr mill started loaded
+/// (validation/cases/MachineStartCases.cpp).
+std::vector<ValidationRow> machineStartCases(const std::string& filter);
 
 }  // namespace milldyn

@@ -78,6 +78,7 @@ ReportSection rollCrusherReportSection();
 ReportSection planetaryGearReportSection();
 ReportSection planetaryBeltReportSection();
 ReportSection beadMillReportSection();
+ReportSection planetaryMotorStartReportSection();
 ReportSection tumblingMillReportSection();
 
 /// Helpers for sections: the row of `caseName` whose quantity is exactly

@@ -11,7 +11,8 @@ namespace milldyn {
 
 std::vector<ReportSection> reportSections() {
     return {burrMillReportSection(), rollCrusherReportSection(), planetaryGearReportSection(),
-            planetaryBeltReportSection(), beadMillReportSection(), tumblingMillReportSection()};
+            planetaryBeltReportSection(), beadMillReportSection(), tumblingMillReportSection(),
+            planetaryMotorStartReportSection()};
 }
 
 const ValidationRow* findRow(const std::vector<ValidationRow>& rows, const std::string& caseName,

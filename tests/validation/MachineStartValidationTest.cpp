@@ -1,0 +1,53 @@
+// The whole-machine start cases (validation/cases/MachineStartCases.cpp) as
+// tests: the seed-000 planetary mill started by its motor through a slipping
+// V-belt, and the burr mill started loaded. Every judged comparison passes;
+// the rows that compare starts with different assumptions are flagged,
+// never silently passed.
+
+#include "validation/cases/ValidationCases.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+namespace milldyn {
+namespace {
+
+const std::vector<ValidationRow>& allRows() {
+    static const std::vector<ValidationRow> rows = machineStartCases("");
+    return rows;
+}
+
+TEST(MachineStartValidation, EveryJudgedComparisonPasses) {
+    int judged = 0;
+    for (const auto& r : allRows())
+        if (r.status != "flagged") {
+            ++judged;
+            EXPECT_EQ(r.status, "pass") << r.caseName << ": " << r.quantity << " " << r.multibody.value_or(NAN)
+                                        << " vs " << r.oracle << " rel " << r.relError;
+        }
+    EXPECT_EQ(judged, 8);
+}
+
+TEST(MachineStartValidation, EveryCaseRanAndTheDifferentStartsAreFlagged) {
+    std::set<std::string> cases;
+    int flagged = 0;
+    for (const auto& r : allRows()) {
+        cases.insert(r.caseName);
+        if (r.status == "flagged") {
+            ++flagged;
+            // A flagged row says where the assumptions differ.
+            EXPECT_TRUE(r.note.find("docs/validation.md") != std::string::npos) << r.quantity;
+        }
+        ASSERT_TRUE(r.multibody.has_value()) << r.quantity;
+        EXPECT_TRUE(std::isfinite(*r.multibody) && std::isfinite(r.oracle)) << r.caseName << ": " << r.quantity;
+    }
+    EXPECT_EQ(cases, (std::set<std::string>{"planetary_motor_start_belt_capacity", "planetary_motor_start_steady",
+                                            "planetary_motor_start_time", "planetary_motor_start_prescribed",
+                                            "planetary_motor_start_energy_balance", "burr_mill_loaded_start_time"}));
+    EXPECT_EQ(flagged, 3);
+}
+
+}  // namespace
+}  // namespace milldyn
