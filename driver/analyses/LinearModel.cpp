@@ -237,6 +237,11 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     return lm;
 }
 
+bool isRigidEigenvalue(const LinearModel& model, std::complex<double> lambda) {
+    const double scale = model.eigenvalues.size() > 0 ? model.eigenvalues.cwiseAbs().maxCoeff() : 0.0;
+    return std::abs(lambda) <= std::max(1e-9 * scale, model.frequencyFloor);
+}
+
 Eigen::VectorXcd harmonicResponse(const LinearModel& model, double P, const Eigen::VectorXcd& force) {
     const std::complex<double> i(0, 1);
     const Eigen::MatrixXcd Z = model.K.cast<std::complex<double>>() -

@@ -62,6 +62,12 @@ struct LinearModel {
 LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes = true,
                            bool reduceConstraints = false);
 
+/// True when `lambda`, an eigenvalue of `model`, is a rigid-body mode's: zero
+/// up to round-off, |λ| <= max(1e-9·max|λ|, frequencyFloor). A free
+/// rotation is a double zero (a Jordan block), which round-off splits into
+/// ±~1e-7 when the largest |λ| is ~75 1/s: above 1e-9·max|λ|, below the floor.
+bool isRigidEigenvalue(const LinearModel& model, std::complex<double> lambda);
+
 /// Fills naturalFrequencies and modeShapes from K v = ω² M v (K's symmetric
 /// part); linearizeScene does this unless told not to.
 void calcUndampedModes(LinearModel& model);

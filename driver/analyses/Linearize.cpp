@@ -27,12 +27,11 @@ void addLinearModelOutputs(const LinearModel& lm, AnalysisResult& result) {
 
     DataTable eig{"eigenvalues", {"index", "real", "imag", "frequency", "damping_ratio"},
                   {"1", "1/s", "rad/s", "Hz", "1"}, {}};
-    const double scale = lm.eigenvalues.cwiseAbs().maxCoeff();
     for (Eigen::Index i = 0; i < lm.eigenvalues.size(); ++i) {
         const auto l = lm.eigenvalues[i];
         const double mag = std::abs(l);
         // The rigid rotation's eigenvalue is 0 up to differencing noise: no damping ratio.
-        const bool rigid = mag <= std::max(1e-9 * scale, lm.frequencyFloor);
+        const bool rigid = isRigidEigenvalue(lm, l);
         eig.rows.push_back({double(i + 1), l.real(), l.imag(), std::abs(l.imag()) / (2 * M_PI),
                             rigid ? 0.0 : -l.real() / mag});
     }

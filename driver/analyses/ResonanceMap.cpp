@@ -140,23 +140,36 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
         result.columnNames.push_back(scene->probes()[outputs[0]].name + ".dynamic_factor_k" + std::to_string(k + 1));
         result.columnUnits.push_back("1");
     }
-    std::vector<double> peak(outputs.size(), 0.0), peakAt(outputs.size(), 0.0);
+    // A peak is taken only among speeds where some harmonic reaches the
+    // coupling: where every harmonic's row pattern cancels there
+    // (LoadResponse::cancels) the factor is round-off (~1e-16), not a response.
+    std::vector<double> peak(outputs.size(), 0.0), peakAt(outputs.size(), 0.0), worstRatio(outputs.size(), 0.0);
+    std::vector<bool> reached(outputs.size(), false);
     for (int i = 0; i < points; ++i) {
         const double w = wMin + (wMax - wMin) * i / (points - 1);
         std::vector<double> row = {w, w * 60 / (2 * M_PI)};
         std::vector<double> perHarmonic;
         for (std::size_t o = 0; o < outputs.size(); ++o) {
             double sum = 0;
+            bool cancelled = true;
             for (std::size_t k = 0; k < b.size(); ++k) {
-                const double a = std::abs(response.output((k + 1) * z * w, static_cast<int>(k + 1), outputs[o]));
+                const double P = (k + 1) * z * w;
+                const int harmonic = static_cast<int>(k + 1);
+                const double a = std::abs(response.output(P, harmonic, outputs[o]));
                 sum += b[k] * a;
                 if (o == 0) perHarmonic.push_back(a / response.staticReference(outputs[o]));
+                if (b[k] > 0) {
+                    const double ratio = response.patternRatio(P, harmonic, outputs[o]);
+                    worstRatio[o] = std::max(worstRatio[o], ratio);
+                    cancelled = cancelled && ratio <= LoadResponse::kCancelled;
+                }
             }
             const double df = sum / (bSum * response.staticReference(outputs[o]));
             row.push_back(df);
-            if (df > peak[o]) {
+            if (!cancelled && (!reached[o] || df > peak[o])) {
                 peak[o] = df;
                 peakAt[o] = w;
+                reached[o] = true;
             }
         }
         row.insert(row.end(), perHarmonic.begin(), perHarmonic.end());
@@ -166,6 +179,18 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     addLinearModelOutputs(lm, result);
     for (std::size_t o = 0; o < outputs.size(); ++o) {
         const std::string& name = scene->probes()[outputs[o]].name;
+        if (!reached[o]) {
+            result.results.push_back({name + ".pattern_ratio", worstRatio[o], "1",
+                                      "largest amplitude of the load's row pattern over the in-phase rows' amplitude, "
+                                      "over speeds and harmonics: round-off, the forcing cancels"});
+            char ratio[32];
+            std::snprintf(ratio, sizeof ratio, "%.1e", worstRatio[o]);
+            result.notes.push_back(name + ": no peak: the rows of " + sc.text("load") +
+                                   " cancel at this coupling at every speed and harmonic (amplitude at most " + ratio +
+                                   " of the rows' in-phase amplitude: round-off); its dynamic factors are zero but "
+                                   "for round-off");
+            continue;
+        }
         result.results.push_back({name + ".peak_dynamic_factor", peak[o], "1", "largest over the speed range"});
         result.results.push_back({name + ".peak_speed", peakAt[o], "rad/s", "rotor speed of that peak"});
     }

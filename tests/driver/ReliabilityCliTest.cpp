@@ -176,6 +176,11 @@ TEST_F(ReliabilityCli, PluginWithoutSlashIsFoundInTheWorkingDirectoryAndFifoRefu
     r = run("", "info " + model + " --plugin " + fifo.string());
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
+    // A file of that name that is no library: the loader's reason, naming the file.
+    std::ofstream(m_dir / "notalib.so") << "not a library\n";
+    r = run("cd " + m_dir.string() + " && ", "info " + model + " --plugin notalib.so");
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find("cannot load: ./notalib.so"), std::string::npos) << r.err;
 }
 
 TEST_F(ReliabilityCli, GridTakesDecimalNumbersOnly) {
