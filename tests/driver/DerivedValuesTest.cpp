@@ -2,6 +2,7 @@
 // reads them (`milldyn info --json`, "derived", full precision), each against
 // its closed form written here from the paper's equation, not from the model.
 #include "driver/Cli.h"
+#include "validation/oracles/PlanetaryGearOracle.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -78,6 +79,30 @@ TEST(DerivedValues, RollCrusherReducedInertiaThroughTheReducerRatio) {
     const double Mn = 893.2, w0 = 600 * kRpm, wn = 588 * kRpm;
     EXPECT_NEAR(valueOf(d, "drive.linear_slope"), Mn / (w0 - wn), 1e-9 * Mn / (w0 - wn));
     EXPECT_NEAR(valueOf(d, "drive.linear_stall_torque"), Mn * w0 / (w0 - wn), 1e-9 * Mn * w0 / (w0 - wn));
+}
+
+TEST(DerivedValues, PlanetaryMillReducedInertiaIsTheCorrectedJprOfEq1) {
+    // Seed 000 eq (1) with the carrier counted once (PHYSICS.md), the
+    // charges hanging, for docs/planetary_gear.md's free parameters.
+    namespace oc = milldyn::oracles;
+    oc::PlanetaryGearParameters p;
+    p.drumRadius = 0.05;
+    p.drumLength = 0.2;
+    p.wallThickness = 0.004;
+    p.shellDensity = 7850;
+    p.chargeDensity = 4800;
+    p.sunRadius = 0.10;
+    p.carrierMass = 2;
+    p.carrierJournalDiameter = 0.025;
+    p.drumJournalDiameter = 0.020;
+    p.fillHalfAngle = M_PI / 2;
+    p.lagAngle = M_PI / 2;
+    const double Jpr = oc::PlanetaryGearOracle(p).calcReducedInertia(0.0);  // (1), the start-up
+    const nlohmann::json d = derivedOf(kModels + "planetary_gear_100x200.yaml");
+    EXPECT_NEAR(valueOf(d, "carrier.reduced_inertia"), Jpr, 1e-7 * Jpr);
+    // Referred to a drum: divided by κ² = ((R + r)/r)².
+    const double kappa = (0.10 + 0.05) / 0.05;
+    EXPECT_NEAR(valueOf(d, "drum1.reduced_inertia"), Jpr / (kappa * kappa), 1e-7 * Jpr / (kappa * kappa));
 }
 
 TEST(DerivedValues, GearPairReducedInertiaIsJ1PlusJ2TimesTheRatioSquared) {
