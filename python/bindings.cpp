@@ -311,7 +311,7 @@ PYBIND11_MODULE(_milldyn, m) {
             SweepOptions options;
             options.model = model;
             options.baseOverrides = toOverrides(overrides);
-            checkSweepPlan(plan, options.model, options.baseOverrides);  // one error, not one per point
+            readModel(options.model, options.baseOverrides);  // one error, not one per point
             options.jobs = std::max(1u, jobs);
             options.outDir = outDir;
             s = runSweep(plan, options);

@@ -147,10 +147,8 @@ ReactionCoupling readReactionCoupling(const ElementSpec& spec) {
     const std::string& coupling = spec.text("coupling");
     const std::string& reaction = spec.text("reaction");
     const bool couplingGiven = spec.params.at("coupling").given;
-    const bool reactionGiven = spec.params.at("reaction").given;
-    if (coupling == "first_order" && reactionGiven && reaction != "first_order")
-        throw spec.error("reaction", "'" + reaction + "' chooses how the consistent load is obtained, but coupling: "
-                                     "first_order takes the frictionless one; drop one of the two keys");
+    // coupling: first_order leaves `reaction:` unused (a shipped model's
+    // `reaction: extrapolated` stays valid when --set switches the coupling).
     if (reaction == "first_order" && couplingGiven && coupling != "first_order")
         throw spec.error("coupling", "'" + coupling + "' contradicts reaction: first_order (an alias of coupling: "
                                      "first_order); drop one of the two keys");

@@ -42,9 +42,9 @@ class JournalFriction;
 /// (`reaction: first_order` stays accepted as an alias of `coupling:
 /// first_order`).
 std::vector<ParamSchema> reactionCouplingParams();
-/// The coupling those keys choose; throws SpecError (at the key) when they
-/// contradict each other (`coupling: first_order` with `reaction:
-/// iterated`, `coupling: consistent` with `reaction: first_order`).
+/// The coupling those keys choose (`coupling: first_order` leaves
+/// `reaction:` unused); throws SpecError at `coupling` when they contradict
+/// each other (`coupling: consistent` with `reaction: first_order`).
 ReactionCoupling readReactionCoupling(const ElementSpec& spec);
 /// "consistent (lagged)", ..., "first_order": the convention in words.
 std::string describeReactionCoupling(ReactionCoupling c);
