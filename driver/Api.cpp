@@ -1,10 +1,12 @@
 #include "driver/Api.h"
 
 #include "driver/SceneBuilder.h"
+#include "driver/Units.h"
 #include "driver/outputs/AtomicFile.h"
 
 #include <chrono>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <unistd.h>
 
@@ -119,6 +121,34 @@ SweepPlan makeSweepPlan(const std::vector<std::string>& grids, const std::vector
     for (const auto& g : grids) axes.push_back(parseGrid(g));
     for (const auto& r : ranges) axes.push_back(parseRange(r));
     return lhs > 0 ? makeLatinHypercube(axes, lhs, seed) : makeGrid(axes);
+}
+
+ModelSpec checkSweepPlan(const SweepPlan& plan, const std::string& model, const std::vector<Override>& base) {
+    ModelSpec spec = readModel(model, base);
+    const std::string option = plan.cartesian ? "--grid" : "--range";
+    for (std::size_t a = 0; a < plan.axes.size(); ++a) {
+        const SweepAxis& axis = plan.axes[a];
+        if (!axis.unit.empty()) continue;
+        // The largest value: a bare 0 needs no unit, any other does.
+        double v = 0;
+        for (double x : axis.values)
+            if (std::abs(x) > std::abs(v)) v = x;
+        if (v == 0) continue;
+        std::vector<Override> one = base;
+        one.push_back(plan.overrides(0)[a]);
+        std::ostringstream text;
+        text << std::setprecision(17) << v;
+        one.back().value = text.str();
+        try {
+            readModel(model, one);
+        } catch (const SpecError& e) {
+            // Only the missing unit is refused for the whole sweep; any
+            // other error of this value stays the error of its points.
+            if (std::string(e.what()).find(units::kBareNumberNeedsUnit) != std::string::npos)
+                throw SpecError({"<" + option + " " + axis.path + "=...>", 1, 1}, axis.path, e.what());
+        }
+    }
+    return spec;
 }
 
 }  // namespace milldyn

@@ -97,5 +97,11 @@ ModelInfo describeModel(const ModelSpec& spec);
 /// std::invalid_argument for a wrong combination, SpecError for a bad text.
 SweepPlan makeSweepPlan(const std::vector<std::string>& grids, const std::vector<std::string>& ranges,
                         std::size_t lhs, unsigned long seed);
+/// Reads the model with the base overrides and checks the plan's values
+/// against it before any point runs: a unitless nonzero value on a
+/// dimensional key is refused up front (SpecError located at the --grid or
+/// --range option, "did you mean 1490 rpm ...?"), as --set refuses it,
+/// instead of failing at every point. Returns the base model.
+ModelSpec checkSweepPlan(const SweepPlan& plan, const std::string& model, const std::vector<Override>& base);
 
 }  // namespace milldyn

@@ -435,8 +435,9 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
-    // The model must read before hundreds of points report the same error.
-    const bool plots = readModel(a.model, a.overrides).outputs.plots && !a.noPlots;
+    // The model and the grid's units are checked before hundreds of points
+    // report the same error.
+    const bool plots = checkSweepPlan(plan, a.model, a.overrides).outputs.plots && !a.noPlots;
 
     SweepOptions options;
     options.model = a.model;

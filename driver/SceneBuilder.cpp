@@ -1,5 +1,6 @@
 #include "driver/SceneBuilder.h"
 
+#include "driver/ReducedInertia.h"
 #include "driver/Simulation.h"
 
 #include "plugins/scene/ElementRegistry.h"
@@ -134,6 +135,7 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
         scene->omit("energy meter", "the " + analysis + " analysis reports no energy balance");
     }
     scene->system().realizeTopology();
+    addReducedInertias(*scene);
     return scene;
 }
 

@@ -567,7 +567,7 @@ double toSIRequiringUnit(std::string_view text, std::string_view expectedUnit) {
     const std::vector<std::string> units = suggestedUnits(expectedUnit);
     for (std::size_t i = 0; i < units.size(); ++i)
         hint += (i == 0 ? "" : (i + 1 == units.size() ? " or " : ", ")) + number + " " + units[i];
-    throw UnitError("a bare number needs a unit here (did you mean " + hint + "?)", t.end);
+    throw UnitError(std::string(kBareNumberNeedsUnit) + " (did you mean " + hint + "?)", t.end);
 }
 
 std::vector<std::string> knownUnitNames() {

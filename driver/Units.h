@@ -86,6 +86,10 @@ private:
     std::size_t column_;
 };
 
+// The start of toSIRequiringUnit's refusal of a bare number (a sweep checks
+// its grid values for it before any point runs).
+inline constexpr char kBareNumberNeedsUnit[] = "a bare number needs a unit here";
+
 // "N*m/rad" -> {kg 1, m 2, s -2, rad -1}. "1" -> dimensionless.
 // The scale factor of the unit is discarded. Throws UnitError.
 Dimension parseUnit(std::string_view unit);

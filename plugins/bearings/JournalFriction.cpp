@@ -128,6 +128,63 @@ void JournalFriction::realizeAcceleration(const State& s) const {
     m_matter.markDiscreteVarUpdateValueRealized(s, m_keptLoad);
 }
 
+std::vector<ParamSchema> reactionCouplingParams() {
+    using P = ParamSchema;
+    return {
+        P::choice("coupling", {"consistent", "first_order"},
+                  "consistent: the load is the reaction of the model with its friction (the journal's own "
+                  "friction included); first_order: the reaction with every journal's friction off (seed 000 "
+                  "eq 21, the paper's convention)")
+            .optional(std::string("consistent")),
+        P::choice("reaction", {"lagged", "iterated", "extrapolated", "first_order"},
+                  "how the consistent load is obtained: the reaction of the last step, made consistent each "
+                  "step, or extrapolated from the last two; first_order: alias of coupling: first_order")
+            .optional(std::string("lagged")),
+    };
+}
+
+ReactionCoupling readReactionCoupling(const ElementSpec& spec) {
+    const std::string& coupling = spec.text("coupling");
+    const std::string& reaction = spec.text("reaction");
+    const bool couplingGiven = spec.params.at("coupling").given;
+    // coupling: first_order leaves `reaction:` unused (a shipped model's
+    // `reaction: extrapolated` stays valid when --set switches the coupling).
+    if (reaction == "first_order" && couplingGiven && coupling != "first_order")
+        throw spec.error("coupling", "'" + coupling + "' contradicts reaction: first_order (an alias of coupling: "
+                                     "first_order); drop one of the two keys");
+    if (coupling == "first_order" || reaction == "first_order") return ReactionCoupling::FirstOrder;
+    return reaction == "iterated"       ? ReactionCoupling::Iterated
+           : reaction == "extrapolated" ? ReactionCoupling::Extrapolated
+                                        : ReactionCoupling::Lagged;
+}
+
+std::string describeReactionCoupling(ReactionCoupling c) {
+    switch (c) {
+        case ReactionCoupling::Lagged: return "consistent (lagged)";
+        case ReactionCoupling::Iterated: return "consistent (iterated)";
+        case ReactionCoupling::Extrapolated: return "consistent (extrapolated)";
+        case ReactionCoupling::FirstOrder: return "first_order";
+    }
+    return "?";
+}
+
+void addKeptLoad(Scene& scene, const std::string& name, JournalFriction* impl) {
+    const ReactionCoupling c = impl->params().coupling;
+    const bool firstOrder = c == ReactionCoupling::FirstOrder;
+    scene.addLaggedValue({name + ".load", c == ReactionCoupling::Iterated || firstOrder,
+                          [impl, firstOrder](const State& s) {
+                              return firstOrder ? impl->calcFrictionless(s).first : impl->calcReaction(s);
+                          },
+                          [impl](State& s, double load) { return impl->keepLoad(s, load); }});
+    if (impl->params().breakaway)
+        scene.addLaggedValue({name + ".breakaway_direction", false,
+                              [impl](const State& s) {
+                                  const double a = impl->calcFrictionless(s).second;
+                                  return a > 0 ? 1.0 : a < 0 ? -1.0 : 0.0;
+                              },
+                              [impl](State& s, double d) { return impl->keepDirection(s, d); }});
+}
+
 namespace {
 
 void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
@@ -136,11 +193,7 @@ void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
     p.frictionCoefficient = spec.number("friction_coefficient");
     p.journalDiameter = spec.number("journal_diameter");
     p.smoothingSpeed = spec.number("smoothing_speed");
-    const std::string& coupling = spec.text("reaction");
-    p.coupling = coupling == "iterated"       ? ReactionCoupling::Iterated
-                 : coupling == "extrapolated" ? ReactionCoupling::Extrapolated
-                 : coupling == "first_order"  ? ReactionCoupling::FirstOrder
-                                              : ReactionCoupling::Lagged;
+    p.coupling = readReactionCoupling(spec);
     p.breakaway = spec.text("at_rest") == "breakaway";
     auto* impl = new JournalFriction(scene.matter(), scene.mobilizerReactions(), body->mobod, p);
     Force::Custom force(scene.forces(), impl);
@@ -153,20 +206,8 @@ void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
                     [impl](const State& s) { return impl->calcReaction(s); }});
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
                          [impl](const State& s) { return impl->calcPower(s); }});
-    const bool firstOrder = p.coupling == ReactionCoupling::FirstOrder;
-    scene.addLaggedValue({spec.name + ".load", p.coupling == ReactionCoupling::Iterated || firstOrder,
-                          [impl, firstOrder](const State& s) {
-                              return firstOrder ? impl->calcFrictionless(s).first : impl->calcReaction(s);
-                          },
-                          [impl](State& s, double load) { return impl->keepLoad(s, load); }});
-    if (p.breakaway)
-        scene.addLaggedValue({spec.name + ".breakaway_direction", false,
-                              [impl](const State& s) {
-                                  const double a = impl->calcFrictionless(s).second;
-                                  return a > 0 ? 1.0 : a < 0 ? -1.0 : 0.0;
-                              },
-                              [impl](State& s, double d) { return impl->keepDirection(s, d); }});
-    scene.note("force " + spec.name + " (JournalFriction, " + spec.text("reaction") + ")",
+    addKeptLoad(scene, spec.name, impl);
+    scene.note("force " + spec.name + " (JournalFriction, " + describeReactionCoupling(p.coupling) + ")",
                "journal of " + body->name + " on its parent, load from Simbody's reaction");
 }
 
@@ -183,14 +224,12 @@ void registerJournalFriction(ElementRegistry& registry) {
         P::quantity("friction_coefficient", "1", "f").atLeast(0).atMost(1),
         P::quantity("journal_diameter", "m", "d").atLeast(0),
         P::quantity("smoothing_speed", "rad/s", "ω_s of tanh(u/ω_s) near zero relative speed").optional(1e-3).above(0),
-        P::choice("reaction", {"lagged", "iterated", "extrapolated", "first_order"},
-                  "reaction of the last step, made consistent each step, extrapolated from the last two, or "
-                  "first_order: the frictionless reaction (seed 000 eq 21, the paper's way)")
-            .optional(std::string("lagged")),
         P::choice("at_rest", {"smooth", "breakaway"},
                   "at zero relative speed: tanh(0) = 0, or full friction against the motion beginning")
             .optional(std::string("smooth")),
     };
+    for (ParamSchema& k : reactionCouplingParams()) s.params.push_back(std::move(k));
+    s.crossCheck = [](const ElementSpec& e) { readReactionCoupling(e); };
     registry.add({std::move(s), buildJournalFriction});
 }
 

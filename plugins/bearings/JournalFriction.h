@@ -3,7 +3,11 @@
 // the reaction the model itself computes in that journal.
 
 #include "plugins/scene/MobilizerReactions.h"
+#include "plugins/scene/ElementSchema.h"
 #include "plugins/scene/Scene.h"
+
+#include <string>
+#include <vector>
 
 
 namespace milldyn {
@@ -29,6 +33,24 @@ struct JournalFrictionParams {
     /// of tanh(0) = 0.
     bool breakaway = false;
 };
+
+class JournalFriction;
+
+/// The keys both JournalFriction and ShaftBearings take for the load:
+/// `coupling: consistent | first_order` (issue 20 item 1) and `reaction:
+/// lagged | iterated | extrapolated`, how the consistent load is obtained
+/// (`reaction: first_order` stays accepted as an alias of `coupling:
+/// first_order`).
+std::vector<ParamSchema> reactionCouplingParams();
+/// The coupling those keys choose (`coupling: first_order` leaves
+/// `reaction:` unused); throws SpecError at `coupling` when they contradict
+/// each other (`coupling: consistent` with `reaction: first_order`).
+ReactionCoupling readReactionCoupling(const ElementSpec& spec);
+/// "consistent (lagged)", ..., "first_order": the convention in words.
+std::string describeReactionCoupling(ReactionCoupling c);
+/// Registers the journal's kept load (and its breakaway direction) with the
+/// scene's step loop, as `name.load` (`name.breakaway_direction`).
+void addKeptLoad(Scene& scene, const std::string& name, JournalFriction* impl);
 
 /**
  * Seed 000 eq (21): a journal of diameter d carrying the radial load |R|

@@ -51,10 +51,7 @@ void buildShaftBearings(const ElementSpec& spec, Scene& scene) {
     p.friction.frictionCoefficient = spec.number("friction_coefficient");
     p.friction.journalDiameter = spec.number("journal_diameter");
     p.friction.smoothingSpeed = spec.number("smoothing_speed");
-    const std::string& coupling = spec.text("reaction");
-    p.friction.coupling = coupling == "iterated"       ? ReactionCoupling::Iterated
-                          : coupling == "extrapolated" ? ReactionCoupling::Extrapolated
-                                                       : ReactionCoupling::Lagged;
+    p.friction.coupling = readReactionCoupling(spec);
     auto* impl = new ShaftBearings(scene.matter(), scene.mobilizerReactions(), body->mobod, p);
     Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
@@ -77,9 +74,7 @@ void buildShaftBearings(const ElementSpec& spec, Scene& scene) {
                         [impl](const State& s) { return std::abs(impl->calcTorque(s)); }});
         scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
                              [impl](const State& s) { return impl->calcPower(s); }});
-        scene.addLaggedValue({spec.name + ".load", p.friction.coupling == ReactionCoupling::Iterated,
-                              [impl](const State& s) { return impl->calcReaction(s); },
-                              [impl](State& s, double load) { return impl->keepLoad(s, load); }});
+        addKeptLoad(scene, spec.name, impl);
     }
     const MobilizedBody mobod = body->mobod;
     const std::string label = spec.name;
@@ -89,7 +84,7 @@ void buildShaftBearings(const ElementSpec& spec, Scene& scene) {
         k.arrow("reaction", at[0], at[1], f[0][0], f[0][1], label + ".bearing_1");
         k.arrow("reaction", at[0], at[1], f[1][0], f[1][1], label + ".bearing_2");
     });
-    scene.note("force " + spec.name + " (ShaftBearings)",
+    scene.note("force " + spec.name + " (ShaftBearings, " + describeReactionCoupling(p.friction.coupling) + ")",
                body->name + " on two bearings at z = " + std::to_string(p.position1) + " m and " +
                    std::to_string(p.position2) + " m; loads split from Simbody's pin reaction by statics");
 }
@@ -107,10 +102,10 @@ void registerShaftBearings(ElementRegistry& registry) {
         P::quantity("friction_coefficient", "1", "f (0: loads only)").optional(0.0).atLeast(0).atMost(1),
         P::quantity("journal_diameter", "m", "d").optional(0.0).atLeast(0),
         P::quantity("smoothing_speed", "rad/s", "omega_s of tanh(u/omega_s)").optional(1e-3).above(0),
-        P::choice("reaction", {"lagged", "iterated", "extrapolated"}, "as JournalFriction")
-            .optional(std::string("lagged")),
     };
+    for (ParamSchema& k : reactionCouplingParams()) s.params.push_back(std::move(k));
     s.crossCheck = [](const ElementSpec& e) {
+        readReactionCoupling(e);
         const auto& z = e.numbers("positions");
         if (z.size() == 1)
             throw e.error("positions", "1 bearing cannot carry the shaft's tilting moment (a journal on the pin "

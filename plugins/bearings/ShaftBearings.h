@@ -32,8 +32,10 @@ struct ShaftBearingsParams {
  * Friction (seed 000 eq 21 per bearing, JournalFriction's law):
  * M_i = |F_i|·f·d/2·tanh(u/ω_s); the torque applied is JournalFriction's
  * with the load |F1| + |F2| (kept from the last step the same way,
- * `reaction: lagged | iterated | extrapolated`), so the bearing torques
- * add up to it when the load is converged. u is the shaft's speed relative
+ * `coupling: consistent` with `reaction: lagged | iterated | extrapolated`,
+ * or `coupling: first_order`: |F1| + |F2| of the frictionless mechanism,
+ * seed 000 eq 21's convention), so the bearing torques add up to it when
+ * the load is converged (consistent coupling). u is the shaft's speed relative
  * to its parent.
  */
 class ShaftBearings : public JournalFriction {

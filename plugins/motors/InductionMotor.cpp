@@ -434,11 +434,10 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
 
     const TorqueSpeedCurve& c = impl->curve();
     scene.addDerivedValue({spec.name + ".rated_slip", c.ratedSlip(), "1", "sn = (ωc − ωn)/ωc"});
-    if (p.law == Law::Linear) {
-        scene.addDerivedValue({spec.name + ".linear_stall_torque", c.linearStallTorque(), "N*m",
-                               "M00 of the linear law M = M00 − b0·ω (seed 003 eq 4 or as printed)"});
-        scene.addDerivedValue({spec.name + ".linear_slope", c.linearSlope(), "N*m*s/rad", "b0 of the linear law"});
-    }
+    // Every law: the papers print M00 and b0 of the working branch (seed 003 eq 4) whatever curve runs.
+    scene.addDerivedValue({spec.name + ".linear_stall_torque", c.linearStallTorque(), "N*m",
+                           "M00 of the linear law M = M00 − b0·ω (seed 003 eq 4 or as printed)"});
+    scene.addDerivedValue({spec.name + ".linear_slope", c.linearSlope(), "N*m*s/rad", "b0 of the linear law"});
     if (p.law == Law::Kloss)
         scene.addDerivedValue({spec.name + ".breakdown_slip", c.breakdownSlip(), "1", "Kloss sk = sn·(λ + √(λ² − 1))"});
     if (p.law == Law::KlossModified) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -136,6 +137,33 @@ TEST(CliCommands, EndTimeOptionReadsABareNumberAsSecondsButSetNeedsTheUnit) {
     const Ran bare = cli({"info", kModels + "burr_mill_5p5kW_idle.yaml", "--set", "scenario.end_time=0.3"});
     EXPECT_EQ(bare.code, 2);
     EXPECT_TRUE(contains(bare.err, "did you mean 0.3 s?")) << bare.err;
+}
+
+// Issue 20 item 4: a grid value without its unit on a dimensional key is
+// refused before any point runs (exit 2, one line, the unit suggested), as
+// --set refuses it, instead of every point failing. A bare 0 needs no unit,
+// so a grid starting at 0 is judged by its other values.
+TEST(CliCommands, SweepGridWithoutUnitIsRefusedBeforeAnyPoint) {
+    const std::string out = testing::TempDir() + "/milldyn_grid_without_unit";
+    std::filesystem::remove_all(out);
+    for (const std::string grid : {"elements.grinding.constant_torque=10:20:3",
+                                   "elements.grinding.constant_torque=0:20:3"}) {
+        SCOPED_TRACE(grid);
+        const Ran r = cli({"sweep", kModels + "burr_mill_5p5kW_idle.yaml", "--grid", grid, "--out", out,
+                           "--no-plots", "--jobs", "1"});
+        EXPECT_EQ(r.code, 2);
+        EXPECT_TRUE(contains(r.err, "<--grid elements.grinding.constant_torque=...>:1:1: error: "
+                                    "elements.grinding.constant_torque: a bare number needs a unit here "
+                                    "(did you mean 20 N*m?)"))
+            << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_FALSE(std::ifstream(out + "/sweep.csv").good()) << "no point may have run";
+    }
+    // A dimensionless key takes bare numbers, so its grid passes the check.
+    const Ran ratio = cli({"sweep", kModels + "burr_mill_5p5kW_idle.yaml", "--grid",
+                           "elements.belt.ratio=1:1:1", "--out", out, "--no-plots", "--jobs", "1",
+                           "--set", "scenario.end_time=0.01 s"});
+    EXPECT_FALSE(contains(ratio.err, "needs a unit")) << ratio.err;
 }
 
 }  // namespace

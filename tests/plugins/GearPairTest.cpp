@@ -256,6 +256,61 @@ TEST(ShaftBearings, FrictionPerBearingIsTheJournalLawOfItsLoadAndAddsUp) {
                 st.probe.at("pb.bearing_1.friction_torque") + st.probe.at("pb.bearing_2.friction_torque"), 1e-6);
 }
 
+/// Issue 20 item 1: `coupling: first_order` takes the bearings' load from
+/// the frictionless mechanism (seed 000 eq 21's convention). Checked against
+/// a second model without friction put in the same state: its bearing loads
+/// are what the first-order friction must be computed from.
+TEST(ShaftBearings, FirstOrderCouplingTakesTheLoadsOfTheFrictionlessMechanism) {
+    const std::string withFriction = "positions: [-0.2 m, 0.5 m], friction_coefficient: 0.01, journal_diameter: 0.1 m";
+    for (const std::string key : {"coupling: first_order", "reaction: first_order"}) {  // the key and its alias
+        SCOPED_TRACE(key);
+        const ModelSpec spec =
+            readText("pair.yaml", replacedIn(pair(""), "positions: [-0.2 m, 0.5 m]", withFriction + ", " + key), {});
+        auto scene = buildScene(spec);
+        SimTK::State s = solveSteadyState(*scene, initialState(*scene, spec));
+        for (int i = 0; i < 50; ++i) {
+            const double change = refreshLaggedValues(*scene, s);
+            s = solveSteadyState(*scene, s);
+            if (change < 1e-14) break;
+        }
+        refreshLaggedValues(*scene, s);
+        scene->system().realize(s, SimTK::Stage::Acceleration);
+        std::map<std::string, double> probe;
+        for (const auto& p : scene->probes()) probe[p.name] = p.value(s);
+
+        const ModelSpec frictionless = readText("pair.yaml", pair(""), {});
+        auto scene0 = buildScene(frictionless);
+        SimTK::State s0 = scene0->system().getDefaultState();
+        s0.setTime(s.getTime());
+        s0.updQ() = s.getQ();
+        s0.updU() = s.getU();
+        scene0->system().realize(s0, SimTK::Stage::Acceleration);
+        double load0 = 0;
+        for (const auto& p : scene0->probes())
+            if (p.name == "pb.bearing_1.radial_load" || p.name == "pb.bearing_2.radial_load") load0 += p.value(s0);
+        ASSERT_GT(load0, 1000);
+        // M = f·(|F1| + |F2|)_frictionless·d/2 at full speed (tanh = 1).
+        EXPECT_NEAR(probe.at("pb.torque"), 0.01 * load0 * 0.05, 1e-9 * load0);
+        // The consistent loads include the friction's own effect: they differ, at first order in f.
+        const double consistent = probe.at("pb.bearing_1.radial_load") + probe.at("pb.bearing_2.radial_load");
+        EXPECT_GT(std::abs(consistent - load0), 1e-6 * load0);
+        EXPECT_LT(std::abs(consistent - load0), 0.01 * load0);
+    }
+    // coupling: first_order leaves reaction: unused (a shipped model's
+    // `reaction: extrapolated` stays valid under --set coupling=first_order);
+    // an explicit consistent coupling with the first_order alias contradicts.
+    EXPECT_NO_THROW(readText("pair.yaml",
+                             replacedIn(pair(""), "positions: [-0.2 m, 0.5 m]",
+                                        withFriction + ", coupling: first_order, reaction: extrapolated"),
+                             {}));
+    EXPECT_EQ(readErrorOf("pair.yaml",
+                          replacedIn(pair(""), "positions: [-0.2 m, 0.5 m]",
+                                     withFriction + ", coupling: consistent, reaction: first_order"),
+                          {})
+                  .key(),
+              "pb.coupling");
+}
+
 }  // namespace
 }  // namespace milldyn
 

@@ -222,7 +222,7 @@ void startUpCases(const Size& size, const std::string& filter, std::vector<Valid
 }
 
 /// The paper's own convention (issue 20 items 1-2): journal loads from the
-/// frictionless reactions (`reaction: first_order`) reproduce eq (21) and the
+/// frictionless reactions (`coupling: first_order`) reproduce eq (21) and the
 /// start torque with friction (20); at the start instant itself (ω = 0),
 /// breakaway friction (`at_rest: breakaway`) carries the friction of the
 /// motion beginning, which tanh(0) = 0 would drop.
@@ -234,7 +234,7 @@ void firstOrderFrictionCases(const Size& size, const std::string& filter, std::v
     const oc::PlanetaryGearOracle withF(oracleParameters(size, 0.01));
     std::vector<Override> paper;
     for (const char* j : {"friction_A", "friction_B1", "friction_B2"}) {
-        paper.push_back({std::string("elements.") + j + ".reaction", "first_order"});
+        paper.push_back({std::string("elements.") + j + ".coupling", "first_order"});
         paper.push_back({std::string("elements.") + j + ".at_rest", "breakaway"});
     }
     // Just after the start (ω1 = 0.5 rad/s), as the start_friction case.
@@ -244,7 +244,7 @@ void firstOrderFrictionCases(const Size& size, const std::string& filter, std::v
     oc::PlanetaryGearMotionState st = oc::PlanetaryGearOracle::makeStartUpState(eps0);
     st.carrierRate = 0.5;
     const oc::PlanetaryGearLoads loads = withF.calcLoads(st, oc::ChargeMotion::kRotatesWithDrum);
-    const std::string why = "reaction: first_order (frictionless loads, the paper's convention)";
+    const std::string why = "coupling: first_order (frictionless loads, the paper's convention)";
     rows.push_back(compareRow(name, "friction torque at B2 (21), f = 0.01, ω1 = 0.5 rad/s", "N*m",
                               r.value(0, "friction_B2.torque"), loads.drums[1].bearingFrictionTorque,
                               kKinetostaticTolerance, why));

@@ -218,7 +218,7 @@ ReportSection planetaryGearReportSection() {
         "the model's reactions include the friction torques' own effect. The difference is O(f): the friction "
         "rows are flagged, and the ratio of the differences at f = 0.01 and 0.001 is 10 within 2 %.",
         "Which journal-friction convention each case uses: `_start_friction_first_order` uses the paper's "
-        "(`reaction: first_order`, loads from the frictionless reactions, and `at_rest: breakaway` at ω = 0) and "
+        "(`coupling: first_order`, loads from the frictionless reactions, and `at_rest: breakaway` at ω = 0) and "
         "reproduces (20)-(21) to 5e-10, also at f = 0.03 set by --set; every other case uses milldyn's "
         "consistent loads (`extrapolated`, as shipped; iterated to 1e-12 in the kinetostatic cases), 3.4e-6 "
         "from (20) at f = 0.01.",
