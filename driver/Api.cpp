@@ -128,7 +128,7 @@ ModelSpec checkSweepPlan(const SweepPlan& plan, const std::string& model, const 
     const std::string option = plan.cartesian ? "--grid" : "--range";
     for (std::size_t a = 0; a < plan.axes.size(); ++a) {
         const SweepAxis& axis = plan.axes[a];
-        if (!axis.unit.empty()) continue;
+        if (!axis.unit.empty() || axis.bareNumberIsSI) continue;
         // The largest value: a bare 0 needs no unit, any other does.
         double v = 0;
         for (double x : axis.values)

@@ -292,7 +292,8 @@ std::size_t SweepPlan::valueIndex(std::size_t point, std::size_t axis) const {
 std::vector<Override> SweepPlan::overrides(std::size_t point) const {
     std::vector<Override> out;
     for (std::size_t a = 0; a < axes.size(); ++a)
-        out.push_back({axes[a].path, valueText(axes[a].values[valueIndex(point, a)], axes[a].unit)});
+        out.push_back({axes[a].path, valueText(axes[a].values[valueIndex(point, a)], axes[a].unit),
+                       axes[a].bareNumberIsSI && axes[a].unit.empty()});
     return out;
 }
 
@@ -306,7 +307,7 @@ SweepAxis parseGrid(const std::string& text) {
     char* end = nullptr;
     const long n = std::strtol(parts[2].c_str(), &end, 10);
     if (*end != '\0' || n < 1 || n > 100000) throw optionError("--grid", text, "n must be a whole number 1..100000");
-    SweepAxis axis{path, unitA, {}};
+    SweepAxis axis{path, unitA, {}, false};
     // 12 significant digits: 0.1:0.5:3 gives 0.3, not 0.30000000000000004.
     for (long i = 0; i < n; ++i) {
         const double v = n == 1 ? a : a + (b - a) * double(i) / double(n - 1);
@@ -322,7 +323,7 @@ SweepAxis parseRange(const std::string& text) {
     const auto [b, unitB] = splitValue("--range", text, parts[1]);
     if (!unitB.empty() && unitB != unitA)
         throw optionError("--range", text, "both ends must be in the same unit ('" + unitA + "' and '" + unitB + "')");
-    return {path, unitA, {a, b}};
+    return {path, unitA, {a, b}, false};
 }
 
 SweepPlan makeGrid(std::vector<SweepAxis> axes) {

@@ -24,6 +24,9 @@ struct SweepAxis {
     std::string path;
     std::string unit;
     std::vector<double> values;  ///< in `unit`
+    /// No unit given and the values are SI (the Python module's numbers);
+    /// on the command line a dimensional axis needs its unit.
+    bool bareNumberIsSI = false;
 };
 
 /// The most points one sweep may have (grid or --lhs).

@@ -314,7 +314,10 @@ PYBIND11_MODULE(_milldyn, m) {
             options.jobs = std::max(1u, jobs);
             options.outDir = outDir;
         }
-        const SweepPlan plan = makeSweepPlan(grids, ranges, lhs, seed);
+        SweepPlan plan = makeSweepPlan(grids, ranges, lhs, seed);
+        // Python's numbers are SI (docs/python.md): an axis given without a
+        // unit is read so at every point, as `Model.set` reads a number.
+        for (auto& axis : plan.axes) axis.bareNumberIsSI = axis.unit.empty();
         // The sweep runs on a thread of its own while this one, holding the
         // GIL every 50 ms only, lets Python see Ctrl-C: a signal stops the
         // running points at their next sample, no further point starts, and

@@ -259,6 +259,9 @@ def test_sweep_gives_the_cli_table(tmp_path, monkeypatch):
     lhs = milldyn.sweep(IDLE, lhs=3, ranges={"scenario.end_time": (4.2, 4.6)}, seed=7, jobs=2)
     assert len(lhs) == 3 and all(4.2 <= v <= 4.6 for v in lhs["scenario.end_time"])
     assert lhs.units["scenario.end_time"] == "SI"
+    # Bare numbers are SI at every point (they failed at every point once,
+    # read like a command line's unit-less value).
+    assert list(lhs["status"]) == ["ok"] * 3, lhs["diagnostic"]
     with pytest.raises(ValueError, match="--lhs"):
         milldyn.sweep(IDLE, lhs=3)
     with pytest.raises(milldyn.ModelError):
