@@ -2,7 +2,9 @@
 shipped model with a transient scenario come from its measured front.
 
 For each models/*.yaml whose `scenario:` is a transient this checks that
-  - bench/results/front_model_NAME.csv (bench/front.sh) exists;
+  - bench/results/front_model_NAME.csv (bench/front.sh) exists, or the
+    model is listed as "not measured" in docs/speed-accuracy-fronts.md
+    (printed here as unguarded, so the gap stays visible);
   - the point chosen from it by bench/front_report.py's rule (the cheapest
     run whose worst error is within TARGET) exists and has worst <= TARGET;
   - the model's `integrator:` block names that integrator and accuracy and
@@ -22,13 +24,14 @@ os.chdir(src)
 import front_report  # noqa: E402  (the rule the doc was generated with)
 
 doc = open("docs/speed-accuracy-fronts.md").read()
+not_measured = set(re.findall(r"^- not measured: (\S+)$", doc, re.M))
 doc_rows = {}
 for line in doc.splitlines():
     m = re.match(r"\| ([A-Za-z0-9_]+) \| (\w+) \| ([0-9.e+-]+) \| ([0-9.e+-]+) \|", line)
     if m:
         doc_rows[m.group(1)] = (m.group(2), float(m.group(3)), float(m.group(4)))
 
-failures, checked = [], 0
+failures, checked, unguarded = [], 0, 0
 for path in sorted(glob.glob("models/*.yaml")):
     name = os.path.basename(path)[:-5]
     text = open(path).read()
@@ -37,6 +40,12 @@ for path in sorted(glob.glob("models/*.yaml")):
         continue
     checked += 1
     csv_path = "bench/results/front_model_%s.csv" % name
+    if not os.path.exists(csv_path) and name in not_measured:
+        print("UNGUARDED %s: no front measured (listed in docs/speed-accuracy-fronts.md)" % path)
+        unguarded += 1
+        continue
+    if name in not_measured:
+        failures.append("%s: measured, but still listed as not measured (run bench/front_report.py)" % path)
     if not os.path.exists(csv_path):
         failures.append("%s: no measured front %s (bench/front.sh models %s)" % (path, csv_path, name))
         continue
@@ -64,6 +73,6 @@ for f in failures:
 if checked == 0:
     print("FAIL no shipped model with a transient scenario found")
     sys.exit(1)
-print("%d passed, %d failed" % (checked - len({f.split(":")[0] for f in failures}),
-                                len({f.split(":")[0] for f in failures})))
+failed_models = len({f.split(":")[0] for f in failures})
+print("%d passed, %d failed, %d skipped" % (checked - unguarded - failed_models, failed_models, unguarded))
 sys.exit(1 if failures else 0)
