@@ -20,7 +20,9 @@
 //    |p - p_ref| / max(|p_ref|, F);
 //  - ripple_error: every torque column (unit N*m), ripple = max - min over
 //    the steady window, |R - R_ref| / max(R_ref, F);
-//  - speed_error: steady_speed (or speed_at_end), relative;
+//  - speed_error: steady_speed (or speed_at_end), |w - w_ref| /
+//    max(|w_ref|, S), S = 1 % of the largest |speed| (rad/s column) of the
+//    reference (a drive braked to rest ends near 0);
 //  - time_error: start_time and runout_time, relative, a difference of up
 //    to one sample interval not counted (they are sample times);
 //  - energy: |energy_balance_relative| of the run itself.
@@ -159,9 +161,18 @@ double torqueFloor(const AnalysisResult& ref) {
     return 0.01 * top;
 }
 
+double speedFloor(const AnalysisResult& ref) {
+    double top = 0;
+    for (std::size_t c = 1; c < ref.columnNames.size(); ++c)
+        if (c < ref.columnUnits.size() && ref.columnUnits[c] == "rad/s")
+            for (const auto& row : ref.rows) top = std::max(top, std::abs(row[c]));
+    return 0.01 * top;
+}
+
 DesignerErrors designerErrors(const AnalysisResult& r, const AnalysisResult& ref, const Window& w) {
     DesignerErrors e;
     const double floor = torqueFloor(ref);
+    const double speedScale = speedFloor(ref);
     const double sample = ref.rows.size() > 1 ? ref.rows[1][0] - ref.rows[0][0] : 0.0;
     auto rel = [](double x, double x0, double scale) {
         const double d = std::abs(x - x0) / std::max(scale, 1e-300);
@@ -178,7 +189,7 @@ DesignerErrors designerErrors(const AnalysisResult& r, const AnalysisResult& ref
             continue;
         }
         if (peak) e.peak = std::max(e.peak, rel(mine->value, s.value, std::max(std::abs(s.value), floor)));
-        if (speed) e.speed = std::max(e.speed, rel(mine->value, s.value, std::abs(s.value)));
+        if (speed) e.speed = std::max(e.speed, rel(mine->value, s.value, std::max(std::abs(s.value), speedScale)));
         if (time) {
             const double d = std::max(0.0, std::abs(mine->value - s.value) - sample * (1 + 1e-9));
             e.time = std::max(e.time, rel(d, 0.0, std::abs(s.value)));
