@@ -37,14 +37,15 @@ def load(scene):
     return ref, [r for r in rows if r["variant"] != "reference"]
 
 
-def front(rows):
-    """Runs no other run beats in both error and wall time."""
-    ok = [r for r in rows if r["status"] == "ok" and r["error"] and math.isfinite(float(r["error"]))]
-    ok.sort(key=lambda r: float(r["wall_s"]))
+def front(rows, error="error", cost="wall_s"):
+    """Runs no other run beats in both error and cost (the studies: trace
+    error and wall time; the shipped models: worst error and CPU time)."""
+    ok = [r for r in rows if r["status"] == "ok" and r[error] and math.isfinite(float(r[error]))]
+    ok.sort(key=lambda r: float(r[cost]))
     best, out = math.inf, []
     for r in ok:
-        if float(r["error"]) < best:
-            best = float(r["error"])
+        if float(r[error]) < best:
+            best = float(r[error])
             out.append(r)
     return out
 
@@ -98,18 +99,6 @@ def choose(rows):
     return min(good, key=lambda r: float(r["cpu_s"])) if good else None
 
 
-def model_front(rows):
-    """Runs no other run beats in both worst error and CPU time."""
-    ok = [r for r in rows if r["status"] == "ok" and r["worst"] and math.isfinite(float(r["worst"]))]
-    ok.sort(key=lambda r: float(r["cpu_s"]))
-    best, out = math.inf, []
-    for r in ok:
-        if float(r["worst"]) < best:
-            best = float(r["worst"])
-            out.append(r)
-    return out
-
-
 def apply_defaults():
     """Writes each measured model's chosen point into its integrator block
     (the name and accuracy lines only, with a comment citing the front)."""
@@ -156,7 +145,7 @@ def models_section():
         if ref is None:
             continue
         pick = choose(rows)
-        ids = {id(r) for r in model_front(rows)}
+        ids = {id(r) for r in front(rows, "worst", "cpu_s")}
         if pick is None:
             table.append("| %s | none within %g | | | | | | | | | | %.3g |" % (name, TARGET, 1e3 * float(ref["cpu_s"])))
         else:
