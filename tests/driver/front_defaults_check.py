@@ -18,7 +18,7 @@ import glob, math, os, re, sys
 
 import yaml
 
-src = sys.argv[1] if len(sys.argv) > 1 else "."
+src = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else ".")
 sys.path.insert(0, os.path.join(src, "bench"))
 os.chdir(src)
 import front_report  # noqa: E402  (the rule the doc was generated with)
