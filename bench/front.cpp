@@ -9,17 +9,40 @@
 //               [--set path=value]... [--variant "name:path=value;..."]...
 //               [--integrators A,B] [--accuracies 1e-2,1e-3]
 //
-// Error: for each compared column c, max_i |x_i - r_i| / max_i |r_i| over
-// the samples both runs share (same times); the row's error is the
-// largest over the columns. Runs go from loose to tight accuracy; a run
-// that passes the budget (wall seconds) is stopped (status "budget") and
-// that integrator's tighter accuracies are skipped (status "skipped").
+//               [--steady-end T1] [--repeat N]
+//
+// Trace error ("error"): for each compared column c, max_i |x_i - r_i| /
+// max_i |r_i| over the samples both runs share (same times); the row's
+// error is the largest over the columns (--columns; without it, none).
+//
+// What a designer reads (issue 20 item 11), each against the reference:
+//  - peak_error: every summary peak (peak_drive_torque, peak.COUPLING),
+//    |p - p_ref| / max(|p_ref|, F);
+//  - ripple_error: every torque column (unit N*m), ripple = max - min over
+//    the steady window, |R - R_ref| / max(R_ref, F);
+//  - speed_error: steady_speed (or speed_at_end), |w - w_ref| /
+//    max(|w_ref|, S), S = 1 % of the largest |speed| (rad/s column) of the
+//    reference (a drive braked to rest ends near 0);
+//  - time_error: start_time and runout_time, relative, a difference of up
+//    to one sample interval not counted (they are sample times);
+//  - energy: |energy_balance_relative| of the run itself.
+// F, the torque floor, is 1 % of the largest |torque| of any torque column
+// in the reference run. worst = the largest of these five.
+// Steady window: the second half of [start_time of the reference (its
+// first sample without one), T1], T1 = --steady-end (a switch-off time)
+// or else the reference's last sample.
+// Cost: process CPU time (std::clock, not wall: the machine is shared),
+// the median over --repeat rounds (default 3) that alternate the points
+// (round k runs every point once); realizations and steps are counted.
+// Runs go from loose to tight accuracy; a run that passes the budget (CPU
+// seconds) is stopped (status "budget") and that integrator's tighter
+// accuracies are skipped (status "skipped").
 
 #include "driver/analyses/Analysis.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -49,14 +72,14 @@ std::vector<Override> overridesOf(const std::string& text) {
 
 struct Run {
     std::string status = "ok";
-    double wall = 0;
+    double cpu = 0;  ///< process CPU seconds
     AnalysisResult result;
 };
 
 Run runOnce(const std::string& model, const std::vector<Override>& overrides, double budget) {
     Run run;
-    const auto start = std::chrono::steady_clock::now();
-    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    const std::clock_t start = std::clock();
+    auto elapsed = [&] { return double(std::clock() - start) / CLOCKS_PER_SEC; };
     try {
         const ModelSpec spec = readModelFile(model, defaultModelReader(), overrides);
         run.result = runAnalysis(spec, [&](double, double) {
@@ -68,7 +91,7 @@ Run runOnce(const std::string& model, const std::vector<Override>& overrides, do
         run.status = "failed";
         std::cerr << "  failed: " << e.what() << "\n";
     }
-    run.wall = elapsed();
+    run.cpu = elapsed();
     return run;
 }
 
@@ -98,11 +121,122 @@ double errorAgainst(const AnalysisResult& r, const AnalysisResult& ref, const st
     return worst;
 }
 
+/// The errors of what a designer reads (see the header).
+struct DesignerErrors {
+    double peak = 0, ripple = 0, speed = 0, time = 0, energy = 0;
+    double worst() const { return std::max({peak, ripple, speed, time, energy}); }
+};
+
+struct Window {
+    double t0 = 0, t1 = 0;
+};
+
+bool isTorque(const AnalysisResult& r, std::size_t c) { return c < r.columnUnits.size() && r.columnUnits[c] == "N*m"; }
+
+double rippleOf(const AnalysisResult& r, std::size_t c, const Window& w) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto& row : r.rows)
+        if (row[0] >= w.t0 - 1e-12 && row[0] <= w.t1 + 1e-12) {
+            lo = std::min(lo, row[c]);
+            hi = std::max(hi, row[c]);
+        }
+    return hi >= lo ? hi - lo : 0.0;
+}
+
+Window steadyWindow(const AnalysisResult& ref, double steadyEnd) {
+    const ResultScalar* start = ref.find("start_time");
+    const double t0 = start ? start->value : (ref.rows.empty() ? 0.0 : ref.rows.front()[0]);
+    double t1 = ref.rows.empty() ? 0.0 : ref.rows.back()[0];
+    if (steadyEnd > 0) t1 = std::min(t1, steadyEnd - 1e-9);
+    return {t0 + 0.5 * (t1 - t0), t1};
+}
+
+double torqueFloor(const AnalysisResult& ref) {
+    double top = 0;
+    for (std::size_t c = 1; c < ref.columnNames.size(); ++c)
+        if (isTorque(ref, c))
+            for (const auto& row : ref.rows) top = std::max(top, std::abs(row[c]));
+    for (const auto& s : ref.results)
+        if (s.name.rfind("peak", 0) == 0 && s.unit == "N*m") top = std::max(top, std::abs(s.value));
+    return 0.01 * top;
+}
+
+double speedFloor(const AnalysisResult& ref) {
+    double top = 0;
+    for (std::size_t c = 1; c < ref.columnNames.size(); ++c)
+        if (c < ref.columnUnits.size() && ref.columnUnits[c] == "rad/s")
+            for (const auto& row : ref.rows) top = std::max(top, std::abs(row[c]));
+    return 0.01 * top;
+}
+
+DesignerErrors designerErrors(const AnalysisResult& r, const AnalysisResult& ref, const Window& w) {
+    DesignerErrors e;
+    const double floor = torqueFloor(ref);
+    const double speedScale = speedFloor(ref);
+    const double sample = ref.rows.size() > 1 ? ref.rows[1][0] - ref.rows[0][0] : 0.0;
+    auto rel = [](double x, double x0, double scale) {
+        const double d = std::abs(x - x0) / std::max(scale, 1e-300);
+        return std::isfinite(d) ? d : INFINITY;
+    };
+    for (const auto& s : ref.results) {
+        const ResultScalar* mine = r.find(s.name);
+        const bool peak = s.name.rfind("peak", 0) == 0 && s.unit == "N*m";
+        const bool speed = s.name == "steady_speed" || s.name == "speed_at_end";
+        const bool time = s.name == "start_time" || s.name == "runout_time";
+        if (!peak && !speed && !time) continue;
+        if (!mine) {  // the run lost a quantity the reference has (a start that did not complete)
+            (peak ? e.peak : speed ? e.speed : e.time) = INFINITY;
+            continue;
+        }
+        if (peak) e.peak = std::max(e.peak, rel(mine->value, s.value, std::max(std::abs(s.value), floor)));
+        if (speed) e.speed = std::max(e.speed, rel(mine->value, s.value, std::max(std::abs(s.value), speedScale)));
+        if (time) {
+            const double d = std::max(0.0, std::abs(mine->value - s.value) - sample * (1 + 1e-9));
+            e.time = std::max(e.time, rel(d, 0.0, std::abs(s.value)));
+        }
+    }
+    for (std::size_t c = 1; c < ref.columnNames.size(); ++c) {
+        if (!isTorque(ref, c)) continue;
+        const std::size_t mc = r.findColumn(ref.columnNames[c]);
+        if (mc == std::string::npos) {
+            e.ripple = INFINITY;
+            continue;
+        }
+        const double r0 = rippleOf(ref, c, w);
+        e.ripple = std::max(e.ripple, rel(rippleOf(r, mc, w), r0, std::max(r0, floor)));
+    }
+    if (const ResultScalar* b = r.find("energy_balance_relative")) e.energy = std::abs(b->value);
+    if (!std::isfinite(e.energy)) e.energy = INFINITY;
+    // A run that stopped before the steady window's end has no ripple to
+    // compare. (A run-out ends at the stop, a time each run finds itself:
+    // the run-out time compares that.)
+    if (r.rows.empty() || r.rows.back()[0] < w.t1 - 1e-9) e.ripple = INFINITY;
+    return e;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
 }  // namespace
+
+struct Point {
+    std::string variant, integrator;
+    double accuracy = 0;
+    std::vector<Override> overrides;
+    std::string status;
+    std::vector<double> cpu;
+    RunStatistics stats;
+    double error = 0;
+    DesignerErrors designer;
+};
 
 int main(int argc, char** argv) {
     std::string model, refText, columnsText;
     double budget = 2;
+    int repeat = 3;
+    double steadyEnd = 0;
     std::vector<Override> base;
     std::vector<std::pair<std::string, std::vector<Override>>> variants;
     std::vector<std::string> integrators = integratorNames();
@@ -116,6 +250,8 @@ int main(int argc, char** argv) {
         if (a == "--ref") refText = next();
         else if (a == "--columns") columnsText = next();
         else if (a == "--budget") budget = std::atof(next().c_str());
+        else if (a == "--repeat") repeat = std::max(1, std::atoi(next().c_str()));
+        else if (a == "--steady-end") steadyEnd = std::atof(next().c_str());
         else if (a == "--set") base.push_back(parseOverride(next()));
         else if (a == "--variant") {
             const std::string v = next();
@@ -128,8 +264,8 @@ int main(int argc, char** argv) {
             for (const auto& x : split(next(), ',')) accuracies.push_back(std::atof(x.c_str()));
         } else model = a;
     }
-    if (model.empty() || refText.empty() || columnsText.empty()) {
-        std::cerr << "usage: bench_front MODEL --ref OVERRIDES --columns c1,c2 [--variant name:OVERRIDES]...\n";
+    if (model.empty() || refText.empty()) {
+        std::cerr << "usage: bench_front MODEL --ref OVERRIDES [--columns c1,c2] [--variant name:OVERRIDES]...\n";
         return 2;
     }
     if (variants.empty()) variants.push_back({"default", {}});
@@ -139,12 +275,13 @@ int main(int argc, char** argv) {
     for (const auto& o : overridesOf(refText)) refOverrides.push_back(o);
     const Run ref = runOnce(model, refOverrides, 0);
     if (ref.status != "ok") return 1;
-    std::printf("variant,integrator,accuracy,status,error,wall_s,steps,realizations,step_attempts\n");
-    std::printf("reference,%s,%g,ok,0,%.6g,%ld,%ld,%ld\n", ref.result.statistics.integrator.c_str(),
-                ref.result.statistics.accuracy, ref.wall, ref.result.statistics.steps,
-                ref.result.statistics.realizations, ref.result.statistics.stepAttempts);
-    std::fflush(stdout);
+    const Window steady = steadyWindow(ref.result, steadyEnd);
+    std::fprintf(stderr, "  reference %s %g: %.3g s CPU, steady window %g..%g s, torque floor %g N*m\n",
+                 ref.result.statistics.integrator.c_str(), ref.result.statistics.accuracy, ref.cpu, steady.t0,
+                 steady.t1, torqueFloor(ref.result));
 
+    // Round 1: every point, loose to tight, skipping past the budget.
+    std::vector<Point> points;
     for (const auto& variant : variants) {
         // A replayed run (no free degrees of freedom) uses no integrator:
         // one row for the variant, whatever the integrator and accuracy.
@@ -153,42 +290,63 @@ int main(int argc, char** argv) {
             if (replayed) break;
             bool skip = false;
             for (double accuracy : accuracies) {
+                Point p;
+                p.variant = variant.first;
+                p.integrator = integrator;
+                p.accuracy = accuracy;
                 if (skip) {
-                    std::printf("%s,%s,%g,skipped,,,,,\n", variant.first.c_str(), integrator.c_str(), accuracy);
+                    p.status = "skipped";
+                    points.push_back(p);
                     continue;
                 }
-                std::vector<Override> o = base;
-                o.insert(o.end(), variant.second.begin(), variant.second.end());
+                p.overrides = base;
+                p.overrides.insert(p.overrides.end(), variant.second.begin(), variant.second.end());
                 char acc[32];
                 std::snprintf(acc, sizeof acc, "%g", accuracy);
-                o.push_back({"integrator.name", integrator});
-                o.push_back({"integrator.accuracy", acc});
-                Run run = runOnce(model, o, budget);
-                // Short runs: best of three (the machine is shared).
-                for (int k = 0; k < 2 && run.status == "ok" && run.wall < 0.2; ++k) {
-                    Run again = runOnce(model, o, budget);
-                    if (again.status == "ok" && again.wall < run.wall) run.wall = again.wall;
+                p.overrides.push_back({"integrator.name", integrator});
+                p.overrides.push_back({"integrator.accuracy", acc});
+                const Run run = runOnce(model, p.overrides, budget);
+                p.status = run.status;
+                p.cpu.push_back(run.cpu);
+                if (run.status == "ok") {
+                    p.stats = run.result.statistics;
+                    p.error = columns.empty() ? 0.0 : errorAgainst(run.result, ref.result, columns);
+                    p.designer = designerErrors(run.result, ref.result, steady);
+                    if (p.stats.integrator == "replay") {
+                        p.integrator = "replay";
+                        p.accuracy = 0;
+                        replayed = true;
+                    }
                 }
-                if (run.status != "ok") {
-                    std::printf("%s,%s,%g,%s,,%.6g,,,\n", variant.first.c_str(), integrator.c_str(), accuracy,
-                                run.status.c_str(), run.wall);
-                    skip = run.status == "budget";
-                } else if (run.result.statistics.integrator == "replay") {
-                    const auto& s = run.result.statistics;
-                    std::printf("%s,replay,0,ok,%.6g,%.6g,%ld,%ld,%ld\n", variant.first.c_str(),
-                                errorAgainst(run.result, ref.result, columns), run.wall, s.steps, s.realizations,
-                                s.stepAttempts);
-                    replayed = true;
-                    break;
-                } else {
-                    const auto& s = run.result.statistics;
-                    std::printf("%s,%s,%g,ok,%.6g,%.6g,%ld,%ld,%ld\n", variant.first.c_str(), integrator.c_str(),
-                                accuracy, errorAgainst(run.result, ref.result, columns), run.wall, s.steps,
-                                s.realizations, s.stepAttempts);
-                }
-                std::fflush(stdout);
+                skip = run.status == "budget";
+                std::fprintf(stderr, "  %s %s %g: %s %.3g s worst %.3g\n", p.variant.c_str(), integrator.c_str(),
+                             accuracy, p.status.c_str(), run.cpu, p.designer.worst());
+                points.push_back(p);
+                if (replayed) break;
             }
         }
+    }
+    // Rounds 2..repeat: the points again, in turn (CPU time median).
+    for (int k = 1; k < repeat; ++k)
+        for (auto& p : points)
+            if (p.status == "ok" && p.cpu.front() < budget) p.cpu.push_back(runOnce(model, p.overrides, 0).cpu);
+
+    std::printf("variant,integrator,accuracy,status,error,cpu_s,steps,realizations,step_attempts,"
+                "peak_error,ripple_error,speed_error,time_error,energy,worst\n");
+    const DesignerErrors refErrors = designerErrors(ref.result, ref.result, steady);
+    const auto& rs = ref.result.statistics;
+    std::printf("reference,%s,%g,ok,0,%.6g,%ld,%ld,%ld,0,0,0,0,%.3g,%.3g\n", rs.integrator.c_str(), rs.accuracy,
+                ref.cpu, rs.steps, rs.realizations, rs.stepAttempts, refErrors.energy, refErrors.energy);
+    for (const auto& p : points) {
+        if (p.status != "ok") {
+            std::printf("%s,%s,%g,%s,,%s,,,,,,,,,\n", p.variant.c_str(), p.integrator.c_str(), p.accuracy,
+                        p.status.c_str(), p.cpu.empty() ? "" : std::to_string(p.cpu.front()).c_str());
+            continue;
+        }
+        const auto& d = p.designer;
+        std::printf("%s,%s,%g,ok,%.3g,%.6g,%ld,%ld,%ld,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g\n", p.variant.c_str(),
+                    p.integrator.c_str(), p.accuracy, p.error, median(p.cpu), p.stats.steps, p.stats.realizations,
+                    p.stats.stepAttempts, d.peak, d.ripple, d.speed, d.time, d.energy, d.worst());
     }
     return 0;
 }

@@ -1,9 +1,17 @@
 #!/usr/bin/env bash
 # The error-cost front of every shipped transient scene (issue #7, part 1),
 # on demand, never a test:
-#   bench/front.sh [SCENE...]     scenes: burr burr_3p2kW_feed roll planetary_gear
-#                                 planetary_gear_dynamic planetary_belt (default: all),
-#                                 planetary_gear_iterated (on request: slow)
+#   bench/front.sh [SCENE...]     scenes: models (default: the shipped models'
+#                                 defaults, issue 20 item 11), and the studies
+#                                 burr burr_3p2kW_feed roll planetary_gear
+#                                 planetary_gear_dynamic planetary_belt
+#                                 planetary_gear_iterated (on request)
+#   bench/front.sh models [MODEL...]   only these models/*.yaml (stem names)
+# models: every shipped model whose scenario is a transient, as shipped,
+# RungeKuttaMerson/RungeKutta3/CPodes/Verlet at 1e-3 ... 1e-8 against
+# RungeKuttaMerson 1e-10; errors of peaks, ripple, steady speed, start and
+# run-out times, energy balance (bench/front.cpp); CPU time the median of 3
+# alternated rounds. Writes bench/results/front_model_NAME.csv.
 # Writes bench/results/front_SCENE.csv (one row per run) and regenerates
 # docs/speed-accuracy.md's tables and docs/images/front_SCENE.png
 # (bench/front_report.py). Each run is stopped after BUDGET wall seconds
@@ -18,7 +26,30 @@ cmake -S . -B "$BUILD" -DMILLDYN_BENCH=ON >/dev/null
 cmake --build "$BUILD" -j2 --target bench_front >/dev/null
 mkdir -p bench/results
 scenes=("$@")
-[ ${#scenes[@]} -gt 0 ] || scenes=(burr burr_3p2kW_feed roll planetary_gear planetary_gear_dynamic planetary_belt)
+[ ${#scenes[@]} -gt 0 ] || scenes=(models)
+if [ "${scenes[0]}" = models ]; then
+  names=("${scenes[@]:1}")
+  if [ ${#names[@]} -eq 0 ]; then
+    for f in models/*.yaml; do
+      # the models whose own scenario is a transient (not scenarios: entries)
+      awk '/^scenario:/{s=1;next} s&&/^[^ #]/{s=0} s&&/^  analysis: *transient/{f=1} END{exit !f}' "$f" \
+        && names+=("$(basename "$f" .yaml)")
+    done
+  fi
+  for name in "${names[@]}"; do
+    out=bench/results/front_model_$name.csv
+    echo "front of models/$name.yaml -> $out (load: $(cut -d' ' -f1-3 /proc/loadavg))" >&2
+    # a drive switched off: the steady window ends there (bench/front.cpp)
+    off=$(sed -n 's/^ *switch_off_time: *\([0-9.e+-]*\) *s\b.*/\1/p' "models/$name.yaml" | head -n 1)
+    "$BUILD"/bench_front "models/$name.yaml" ${off:+--steady-end "$off"} --budget "${MODEL_BUDGET:-20}" --repeat "${REPEAT:-3}" \
+      --set outputs.plots=false \
+      --ref "integrator.name=RungeKuttaMerson;integrator.accuracy=1e-10" \
+      --integrators "${INTEGRATORS:-RungeKuttaMerson,RungeKutta3,CPodes,Verlet}" \
+      --accuracies "${ACCURACIES:-1e-3,1e-4,1e-5,1e-6,1e-7,1e-8}" > "$out.tmp" && mv "$out.tmp" "$out"
+  done
+  /usr/bin/python3 bench/front_report.py
+  exit 0
+fi
 # Integrators and accuracies: all (CPodesAdams too) at 1e-2 ... 1e-10,
 # trimmed where a scene is slow (said in docs/speed-accuracy.md).
 ALL_ACC=1e-2,1e-3,1e-4,1e-5,1e-6,1e-7,1e-8,1e-9,1e-10
