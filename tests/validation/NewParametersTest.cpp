@@ -4,6 +4,7 @@
 // parameters — in the paper's convention and in milldyn's where they differ
 // (docs/reproducing-papers.md states the difference).
 #include "driver/Cli.h"
+#include "tests/driver/SetArgs.h"
 #include "validation/oracles/BeadMillOracle.h"
 #include "validation/oracles/BurrMillOracle.h"
 #include "validation/oracles/PlanetaryBeltOracle.h"
@@ -45,15 +46,7 @@ nlohmann::json runSummary(const std::string& model, const std::vector<std::strin
     return nlohmann::json::parse(f);
 }
 
-/// `--set` pairs for runSummary.
-std::vector<std::string> setArgs(const std::vector<std::string>& sets) {
-    std::vector<std::string> args;
-    for (const auto& s : sets) {
-        args.push_back("--set");
-        args.push_back(s);
-    }
-    return args;
-}
+using testing_helpers::setArgs;
 
 /// `milldyn run MODEL --set ...` in process; summary.json's results.
 nlohmann::json runResults(const std::string& model, const std::vector<std::string>& sets, const std::string& tag) {
