@@ -31,10 +31,13 @@ namespace oc = milldyn::oracles;
 
 const std::string kModels = std::string(MILLDYN_SOURCE_DIR) + "/models/";
 
+/// The output directory of run `tag`.
+std::string outDir(const std::string& tag) { return testing::TempDir() + "/milldyn_new_parameters_" + tag; }
+
 /// `milldyn run MODEL ARGS...` in process (ARGS: `--set k=v` pairs and
 /// any other option, e.g. `--scenario modes`); the whole summary.json.
 nlohmann::json runSummary(const std::string& model, const std::vector<std::string>& args, const std::string& tag) {
-    const std::string out = testing::TempDir() + "/milldyn_new_parameters_" + tag;
+    const std::string out = outDir(tag);
     std::filesystem::remove_all(out);
     std::vector<std::string> all = {"run", model, "--out", out, "--set", "outputs.plots=false"};
     all.insert(all.end(), args.begin(), args.end());
@@ -200,6 +203,49 @@ TEST(NewParameters, Seed001ShaftDiameterAndDeflectionOnANewRotor) {
               << " mm), end deflection " << end << " m vs beam " << endOracle << " m ("
               << (end - endOracle) / endOracle << "), seal " << sealValue << " m vs " << sealOracle << " m ("
               << (sealValue - sealOracle) / sealOracle << ")\n";
+}
+
+// Seed 001, the mixing power of eq (1), N = 0.616 π ρ_c ω² r⁴ k √(ν ω), on
+// the new rotor in another medium at a speed the paper did not use: the
+// rotor started turning (`initial_state: file`, the pulley's
+// `initial_speed`), the discs' drag powers read at t = 0 from the CSV and
+// summed, as a user would.
+TEST(NewParameters, Seed001MixingPowerOnANewRotorAndMedium) {
+    const int k = 6;
+    const double r = 0.085, rho = 1800, nu = 3e-5, w = 150;  // m, kg/m^3, m^2/s, rad/s
+    const nlohmann::json summary = runSummary(
+        kModels + "bead_mill_5disc_0p1m.yaml",
+        setArgs({"elements.rotor.discs=6", "elements.rotor.disc_diameter=0.17 m", "elements.rotor.span=0.4 m",
+                 "elements.rotor.segments=24", "elements.rotor.medium_density=1800 kg/m^3",
+                 "elements.rotor.medium_viscosity=3e-5 m^2/s", "scenario.analysis=transient",
+                 "scenario.end_time=0.1 ms", "scenario.initial_state=file", "bodies.pulley.initial_speed=150 rad/s"}),
+        "seed001_power");
+    ASSERT_TRUE(summary.contains("results")) << summary.dump();
+    std::ifstream csv(outDir("seed001_power") + "/timeseries.csv");
+    std::string header, first;
+    ASSERT_TRUE(std::getline(csv, header) && std::getline(csv, first));
+    std::vector<std::string> names, cells;
+    for (std::stringstream h(header); std::getline(h, names.emplace_back(), ',');) {}
+    for (std::stringstream c(first); std::getline(c, cells.emplace_back(), ',');) {}
+    double power = 0, reynolds = 0, speed = 0;
+    int drags = 0;
+    for (std::size_t i = 0; i < names.size() && i < cells.size(); ++i) {
+        const std::string& n = names[i];
+        if (n.rfind("rotor.drag", 0) == 0 && n.find(".power[W]") != std::string::npos) {
+            power += std::stod(cells[i]);
+            ++drags;
+        }
+        if (n.rfind("rotor.drag", 0) == 0 && n.find(".reynolds[") != std::string::npos) reynolds = std::stod(cells[i]);
+        if (n == "pulley.speed[rad/s]") speed = std::stod(cells[i]);
+    }
+    ASSERT_GT(drags, 0) << header;
+    EXPECT_EQ(speed, w);
+    // Same formula on both sides: only round-off between them.
+    const double oracle = oc::beadMillLaminarPower(rho, nu, w, r, k);
+    EXPECT_NEAR(power, oracle, 1e-12 * oracle);
+    EXPECT_NEAR(reynolds, oc::beadMillDiscReynolds(w, r, nu), 1e-12 * reynolds);
+    std::cout << "seed 001 mixing power: " << power << " W (eq 1: " << oracle << " W), Re " << reynolds
+              << " (laminar below ~3e5); turbulent law " << oc::beadMillTurbulentPower(rho, nu, w, r, k) << " W\n";
 }
 
 /// A value for `--set` at full precision.
