@@ -484,6 +484,19 @@ void addDefaultPlots(AnalysisResult& result) {
             loads.push_back(i);
     }
     if (!loads.empty()) result.plots.push_back({"bearing_loads", loads});
+    // Charge lags (SegmentCharge `NAME.lag`) that move (a held or
+    // torque-arm lag is the model's number, a flat line), labelled in their
+    // lag_from convention by the probe.
+    std::vector<std::size_t> lags;
+    for (std::size_t i = 1; i < result.columnNames.size(); ++i) {
+        const std::string& n = result.columnNames[i];
+        if (result.columnUnits[i] != "rad" || n.size() <= 4 || n.compare(n.size() - 4, 4, ".lag") != 0) continue;
+        const bool moves = std::any_of(result.rows.begin(), result.rows.end(), [&](const std::vector<double>& row) {
+            return i < row.size() && i < result.rows.front().size() && row[i] != result.rows.front()[i];
+        });
+        if (moves) lags.push_back(i);
+    }
+    if (!lags.empty()) result.plots.push_back({"charge_lags", lags});
 }
 
 std::string speedColumnName(const Scene& scene, const SceneBody& body) {
@@ -503,9 +516,11 @@ SampleTable::SampleTable(const Scene& scene, AnalysisResult& result) : m_scene(s
         result.columnNames.push_back(speedColumnName(scene, b));
         result.columnUnits.push_back("rad/s");
     }
+    result.columnLabels.assign(result.columnNames.size(), "");
     for (const auto& p : scene.probes()) {
         result.columnNames.push_back(p.name);
         result.columnUnits.push_back(p.unit);
+        result.columnLabels.push_back(p.label);
     }
 }
 

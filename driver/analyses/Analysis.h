@@ -46,6 +46,10 @@ struct AnalysisResult {
     std::string tableName = "timeseries";
     std::vector<std::string> columnNames;
     std::vector<std::string> columnUnits;
+    /// Column i's axis label (what it is and its sign convention, from
+    /// Probe::label); may be shorter than columnNames, empty entries where
+    /// the name and unit say it.
+    std::vector<std::string> columnLabels;
     std::vector<std::vector<double>> rows;
     std::vector<ResultScalar> results;
     /// Values the elements derive from their parameters (Scene::addDerivedValue).

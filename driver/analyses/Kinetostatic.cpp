@@ -43,9 +43,11 @@ AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress
     result.plotXLabel = "carrier angle [rad]";
     result.columnNames = {"carrier_angle", "reduced_inertia"};
     result.columnUnits = {"rad", "kg*m^2"};
+    result.columnLabels = {"", ""};
     for (const auto& p : scene->probes()) {
         result.columnNames.push_back(p.name);
         result.columnUnits.push_back(p.unit);
+        result.columnLabels.push_back(p.label);
     }
 
     SimTK::State state = initialState(*scene, spec);

@@ -198,6 +198,45 @@ bool writeModeShapePlot(const std::string& png, const std::vector<ModeShapeBars>
 
 }  // namespace
 
+std::string formatPlotCommands(const AnalysisResult& result, const std::string& title,
+                               const std::vector<std::size_t>& columns, const std::string& csvPath) {
+    auto labelOf = [&](std::size_t col) {
+        return col < result.columnLabels.size() ? result.columnLabels[col] : std::string();
+    };
+    // One panel per group of like magnitudes, each with its own axis.
+    const auto panels = plotPanels(result, columns);
+    std::ostringstream script;
+    script << "set datafile separator ','\nset key outside right\nset grid\n"
+           << (result.plotXLabel.find("frequency") != std::string::npos ? "set logscale x\n" : "");
+    if (panels.size() > 1) script << "set multiplot layout " << panels.size() << ",1 title " << quoteForGnuplot(title) << "\n";
+    for (std::size_t p = 0; p < panels.size(); ++p) {
+        const bool last = p + 1 == panels.size();
+        const std::size_t first = panels[p][0];
+        const bool degrees = result.columnUnits[first] == "rad";
+        std::string label = labelOf(first);
+        for (std::size_t col : panels[p])
+            if (labelOf(col) != label) label.clear();
+        script << "set xlabel " << quoteForGnuplot(last ? result.plotXLabel : "") << "\nset ylabel "
+               << quoteForGnuplot((label.empty() ? title : label) + " [" +
+                                  (degrees ? std::string("deg") : result.columnUnits[first]) + "]")
+               << "\n";
+        if (panels.size() == 1) script << "set title " << quoteForGnuplot(title) << "\n";
+        script << "plot ";
+        for (std::size_t k = 0; k < panels[p].size(); ++k) {
+            const std::size_t col = panels[p][k];
+            script << (k ? ", " : "") << quoteForGnuplot(csvPath) << " every ::1 using 1:";
+            if (result.columnUnits[col] == "rad")
+                script << "($" << col + 1 << "*180/pi)";
+            else
+                script << col + 1;
+            script << " with lines lw 1.5 title " << quoteForGnuplot(result.columnNames[col]);
+        }
+        script << "\n";
+    }
+    if (panels.size() > 1) script << "unset multiplot\n";
+    return script.str();
+}
+
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning) {
     std::vector<std::string> written;
@@ -215,29 +254,9 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
     for (const auto& plot : result.plots) {
         if (plot.second.empty()) continue;
         const std::string png = dir + "/" + plot.first + ".png";
-        // One panel per group of like magnitudes, each with its own axis.
-        const auto panels = plotPanels(result, plot.second);
-        std::ostringstream script;
-        script << "set datafile separator ','\nset key outside right\nset grid\n"
-               << (result.plotXLabel.find("frequency") != std::string::npos ? "set logscale x\n" : "");
-        if (panels.size() > 1)
-            script << "set multiplot layout " << panels.size() << ",1 title " << quoteForGnuplot(plot.first) << "\n";
-        for (std::size_t p = 0; p < panels.size(); ++p) {
-            const bool last = p + 1 == panels.size();
-            script << "set xlabel " << quoteForGnuplot(last ? result.plotXLabel : "") << "\nset ylabel "
-                   << quoteForGnuplot(plot.first + " [" + result.columnUnits[panels[p][0]] + "]") << "\n";
-            if (panels.size() == 1) script << "set title " << quoteForGnuplot(plot.first) << "\n";
-            script << "plot ";
-            for (std::size_t k = 0; k < panels[p].size(); ++k) {
-                const std::size_t col = panels[p][k];
-                script << (k ? ", " : "") << quoteForGnuplot(csvPath) << " every ::1 using 1:" << col + 1
-                       << " with lines lw 1.5 title " << quoteForGnuplot(result.columnNames[col]);
-            }
-            script << "\n";
-        }
-        if (panels.size() > 1) script << "unset multiplot\n";
-        const int height = panels.size() > 1 ? static_cast<int>(300 * panels.size()) + 60 : 560;
-        if (!renderGnuplotPng(png, script.str(), 1000, height)) {
+        const std::size_t panels = plotPanels(result, plot.second).size();
+        const int height = panels > 1 ? static_cast<int>(300 * panels) + 60 : 560;
+        if (!renderGnuplotPng(png, formatPlotCommands(result, plot.first, plot.second, csvPath), 1000, height)) {
             warning = "gnuplot failed for plot " + plot.first;
             continue;
         }

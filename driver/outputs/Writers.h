@@ -45,6 +45,14 @@ std::vector<std::vector<std::size_t>> plotPanels(const AnalysisResult& result, c
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning);
 
+/// The gnuplot commands of plot `title` (columns `columns` of `csvPath`),
+/// without terminal and output: one panel per plotPanels group. A panel's
+/// y axis names what its columns are where they share a label
+/// (AnalysisResult::columnLabels: a charge lag's convention), else the
+/// plot's title; angles (unit rad) are drawn in degrees.
+std::string formatPlotCommands(const AnalysisResult& result, const std::string& title,
+                               const std::vector<std::size_t>& columns, const std::string& csvPath);
+
 /// One bar chart of a mode shape: its title ("mode 2: 14.3 Hz") and the
 /// amplitude of every body, by name, in the table's column order.
 struct ModeShapeBars {

@@ -405,8 +405,16 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                  return cb.getBodyAngularAcceleration(s)[2] - reference.getBodyAngularAcceleration(s)[2];
              }});
     }
+    // The lag's convention, in words: the note below; the lag's plot axis.
+    const bool vertical = p.lagFrom == LagReference::Vertical;
+    const std::string convention =
+        vertical ? "from the downward vertical, + in the +z (turning) sense"
+                 : "from the leading tangent towards the outward carrier radius (seed 000 eq 22)";
     scene.addProbe({spec.name + ".lag", "rad", ProbeRole::Generic, Stage::Position,
-                    [impl](const State& s) { return impl->calcLag(s); }});
+                    [impl](const State& s) { return impl->calcLag(s); },
+                    // Short enough for a plot's y axis.
+                    vertical ? "lag from downward vertical, + turning (lag_from: vertical)"
+                             : "lag from leading tangent to carrier radius (lag_from: carrier_radius)"});
     if (p.motion == ChargeMotionMode::TorqueArm) {
         scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, Stage::Velocity,
                         [impl](const State& s) { return impl->calcWallTorque(s); }});
@@ -433,8 +441,6 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         scene.addDerivedValue({spec.name + ".critical_speed", criticalSpeed, "rad/s",
                                "ω_c = sqrt(|g|/r) = sqrt(2|g|/D): a particle at the wall is held at the top "
                                "(ball radius neglected)"});
-    const char* convention = p.lagFrom == LagReference::Vertical ? "from the downward vertical, + in the +z sense"
-                                                                 : "from the carrier radius (seed 000 eq 22)";
     scene.note(p.motion == ChargeMotionMode::WithDrum
                    ? "charge " + spec.name + " (SegmentCharge, with_drum) folded into " + drum.name
                : p.motion == ChargeMotionMode::TorqueArm

@@ -74,6 +74,10 @@ void buildCarrierDrive(const ElementSpec& spec, Scene& scene) {
                     [impl](const State& s) { return impl->calcAcceleration(s.getTime()); }});
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source,
                          [torque, mobod](const State& s) { return torque(s) * pinSpeed(s, mobod); }});
+    if (p.exponential)
+        scene.addDerivedValue({spec.name + ".initial_acceleration", impl->calcInitialAcceleration(), "rad/s^2",
+                               "ε0 = ω_y/(τ (1 − e^(−t_p/τ))) of ε = ε0 e^(−t/τ) (seed 000, Fig. 6; ε0 = ω_y/(1 − "
+                               "e^(−t_p)) with the paper's τ = 1 s)"});
     scene.addSpeedHint(body->name, p.steadySpeed);
     scene.addPrescribedTrajectory(
         {body->name, mobod, [impl](double t0, double u0, double t) { return impl->calcAdvance(t0, u0, t); }});

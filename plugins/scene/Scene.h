@@ -39,6 +39,10 @@ struct Probe {
     ProbeRole role = ProbeRole::Generic;
     SimTK::Stage stage = SimTK::Stage::Dynamics;
     std::function<double(const SimTK::State&)> value;
+    /// What the value is and its sign convention, for a plot's axis ("lag
+    /// from the downward vertical, + in the +z sense"); empty: the name and
+    /// unit say it.
+    std::string label = {};
 };
 
 /// A power flow an element declares for the energy balance: a source feeds

@@ -342,6 +342,24 @@ void buildBeltDrive(const ElementSpec& spec, Scene& scene) {
     BeltDriveParams p;
     p.fixedSheaveRadius = spec.number("fixed_sheave_radius");
     p.drumSheaveRadius = spec.number("drum_sheave_radius");
+    // Seed 002's kinematics and criteria (eqs 1-8) from the sheaves and the
+    // arm l_OA, the drum axis's distance from the carrier axis.
+    {
+        const Vec3 a = drum->mobod.getDefaultInboardFrame().p();
+        const double arm = std::hypot(a[0], a[1]), r0 = p.fixedSheaveRadius, rA = p.drumSheaveRadius;
+        scene.addDerivedValue({spec.name + ".arm", arm, "m", "l_OA, carrier axis to drum axis (seed 002)"});
+        scene.addDerivedValue({spec.name + ".drum_speed_ratio", 1 - r0 / rA, "1",
+                               "ω/Ω = 1 − r0/r_A, drum speed per carrier speed (seed 002 eqs 1-4)"});
+        scene.addDerivedValue({spec.name + ".criterion_k", rA / (arm + rA), "1", "k = r_A/(l_OA + r_A) (seed 002 eq 6)"});
+        scene.addDerivedValue({spec.name + ".criterion_c", r0 / rA, "1", "c = r0/r_A (seed 002 eq 8, default reading)"});
+        if (arm > 0)
+            scene.addDerivedValue({spec.name + ".sin_belt_angle", std::abs(r0 - rA) / arm, "1",
+                                   "sin β = |r0 − r_A|/l_OA (seed 002 eq 5)"});
+        if (r0 != rA && arm > 0)
+            scene.addDerivedValue({spec.name + ".instant_centre_distance", rA * arm / (r0 - rA), "m",
+                                   "l_AD = r_A l_OA/(r0 − r_A), drum axis to its instantaneous centre on line OA, "
+                                   "signed as eq (4) (seed 002); none when r0 = r_A (the drum translates)"});
+    }
     p.law = spec.text("law") == "elastic" ? BeltLaw::Elastic : BeltLaw::Rigid;
     p.tightToSlack = spec.number("tight_to_slack");
     p.pretension = spec.number("pretension");

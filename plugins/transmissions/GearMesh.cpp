@@ -100,6 +100,11 @@ void buildGearMesh(const ElementSpec& spec, Scene& scene) {
     });
     // Steady running keeps the planet at this speed ratio to the carrier.
     scene.addSpeedRelation(planet->name, carrier->name, impl->calcPlanetSpeed(1.0));
+    // The planet's pin speed is relative to the carrier (ω_r = ω1 R/r, eq
+    // 15): κ = 1 + ω_r/ω1.
+    scene.addDerivedValue({spec.name + ".speed_ratio", 1 + impl->calcPlanetSpeed(1.0), "1",
+                           "κ = ω_planet/ω_carrier: (R + r)/r rolling outside the fixed gear (seed 000 eqs 4, 15), "
+                           "−(R − r)/r inside a ring"});
     // Schematic: the fixed gear about the carrier's axis, the carrier arm to
     // the planet's axis, the planet's pitch circle.
     const double R = p.fixedPitchRadius, rp = p.planetPitchRadius;

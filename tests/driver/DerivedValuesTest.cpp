@@ -2,6 +2,8 @@
 // reads them (`milldyn info --json`, "derived", full precision), each against
 // its closed form written here from the paper's equation, not from the model.
 #include "driver/Cli.h"
+#include "tests/driver/SetArgs.h"
+#include "validation/oracles/PlanetaryBeltOracle.h"
 #include "validation/oracles/PlanetaryGearOracle.h"
 
 #include <gtest/gtest.h>
@@ -122,6 +124,72 @@ TEST(DerivedValues, TwoIndependentDrivesHaveNoReducedInertiaAndSaySo) {
     std::ostringstream out, err;
     ASSERT_EQ(runCli({"info", file}, out, err), 0) << err.str();
     EXPECT_NE(out.str().find("2 independent motions, not one rigid train"), std::string::npos) << out.str();
+}
+
+// Issue 20 item 3 (docs/reproducing-papers.md, every seed's intermediates):
+// the values added for it, on parameters changed by --set.
+
+using testing_helpers::setArgs;
+
+// Seed 002 eqs (1)-(8): the criteria, the belt angle, the drum's speed ratio
+// and its instantaneous centre, on an arm and sheaves the paper did not use,
+// against the oracle's.
+TEST(DerivedValues, Seed002CriteriaAndBeltKinematicsOnANewMill) {
+    const nlohmann::json d = derivedOf(kModels + "planetary_belt_200x1000.yaml",
+                                       setArgs({"bodies.drum1.joint.location=[0.75 m, 0 m, 0 m]",
+                                                "elements.belt1.fixed_sheave_radius=0.06 m",
+                                                "elements.belt1.drum_sheave_radius=0.12 m"}));
+    oracles::PlanetaryBeltGeometry g;
+    g.drumRadius = 0.1;
+    g.drumSheaveRadius = 0.12;
+    g.fixedSheaveRadius = 0.06;
+    g.carrierArm = 0.75;
+    const oracles::PlanetaryBeltCriteria c = oracles::criteriaFromGeometry(g);
+    const oracles::PlanetaryBeltKinematics kin = oracles::calcKinematics(g, 1.0);
+    EXPECT_NEAR(valueOf(d, "belt1.arm"), 0.75, 1e-15);
+    EXPECT_NEAR(valueOf(d, "belt1.criterion_k"), c.k, 1e-15);  // 0.12/0.87
+    EXPECT_NEAR(valueOf(d, "belt1.criterion_c"), c.c, 1e-15);  // 0.5
+    EXPECT_NEAR(valueOf(d, "belt1.sin_belt_angle"), oracles::calcSinBeltAngle(g), 1e-15);  // 0.08
+    EXPECT_NEAR(valueOf(d, "belt1.drum_speed_ratio"), kin.drumRate, 1e-15);                 // ω/Ω = 0.5
+    ASSERT_TRUE(kin.hasInstantaneousCentre);
+    EXPECT_NEAR(valueOf(d, "belt1.instant_centre_distance"), kin.centreOffsetFromA, 1e-14);  // −1.5 m
+    // belt2 keeps the shipped mill: k = 0.1, c = 0.5 (the Fig. 3 case).
+    EXPECT_NEAR(valueOf(d, "belt2.criterion_k"), 0.1, 1e-15);
+    EXPECT_NEAR(valueOf(d, "belt2.criterion_c"), 0.5, 1e-15);
+}
+
+TEST(DerivedValues, Seed002NoInstantCentreWhenTheDrumTranslates) {
+    // c = 1: ω = 0, l_AD infinite (eq 4): no value rather than inf.
+    const nlohmann::json d =
+        derivedOf(kModels + "planetary_belt_200x1000.yaml", setArgs({"elements.belt1.fixed_sheave_radius=0.1 m"}));
+    EXPECT_EQ(valueOf(d, "belt1.drum_speed_ratio"), 0.0);
+    EXPECT_FALSE(d.contains("belt1.instant_centre_distance")) << d.dump();
+}
+
+// Seed 000, the start's initial acceleration ε0 (Fig. 6): ω(t_p) = ω_y for
+// ε = ε0 e^(−t), so ε0 = ω_y/(1 − e^(−t_p)).
+TEST(DerivedValues, Seed000InitialAccelerationOnANewStart) {
+    const double wy = 600 * kRpm;
+    const nlohmann::json d =
+        derivedOf(kModels + "planetary_gear_100x200.yaml",
+                  setArgs({"elements.drive.steady_speed=600 rpm", "elements.drive.acceleration_time=2.5 s"}));
+    EXPECT_NEAR(valueOf(d, "drive.initial_acceleration"), wy / (1 - std::exp(-2.5)), 1e-12 * wy);
+    // Another time constant: ε0 = ω_y/(τ (1 − e^(−t_p/τ))).
+    const nlohmann::json d2 = derivedOf(kModels + "planetary_gear_100x200.yaml",
+                                        setArgs({"elements.drive.steady_speed=600 rpm",
+                                                 "elements.drive.acceleration_time=2.5 s",
+                                                 "elements.drive.time_constant=0.5 s"}));
+    EXPECT_NEAR(valueOf(d2, "drive.initial_acceleration"), wy / (0.5 * (1 - std::exp(-5.0))), 1e-12 * wy);
+}
+
+// Seed 000 eqs (4), (15): κ = ω2/ω1 = (R + r)/r, on gears that still fit
+// the shipped arm R + r = 0.15 m.
+TEST(DerivedValues, Seed000SpeedRatioKappaOnNewGears) {
+    const nlohmann::json d = derivedOf(
+        kModels + "planetary_gear_100x200.yaml",
+        setArgs({"elements.mesh1.fixed_pitch_radius=0.11 m", "elements.mesh1.planet_pitch_radius=0.04 m"}));
+    EXPECT_NEAR(valueOf(d, "mesh1.speed_ratio"), (0.11 + 0.04) / 0.04, 1e-14);
+    EXPECT_NEAR(valueOf(d, "mesh2.speed_ratio"), (0.10 + 0.05) / 0.05, 1e-14);  // as shipped
 }
 
 }  // namespace

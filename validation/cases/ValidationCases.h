@@ -23,6 +23,10 @@ struct ValidationRow {
     std::string note;
 };
 
+/// The value a row judges against its oracle: the multibody model's, else
+/// the paper's (NaN if neither).
+double judgedValue(const ValidationRow& r);
+
 /// Compares `value` with `oracle`: relative error against |oracle|.
 ValidationRow compareRow(std::string caseName, std::string quantity, std::string unit, double value,
                          double oracle, double tolerance, std::string note = "");

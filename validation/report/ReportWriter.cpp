@@ -36,8 +36,7 @@ std::string relText(double v) {
 /// oracle is 0 and a relative error means nothing ("rel. 2.9e+299").
 std::string errorText(const ValidationRow& r) {
     if (r.oracle != 0) return relText(r.relError);
-    const double value = r.multibody ? *r.multibody : r.paper ? *r.paper : NAN;
-    return "abs. " + relText(std::abs(value)) + (r.unit == "1" || r.unit.empty() ? "" : " " + r.unit);
+    return "abs. " + relText(std::abs(judgedValue(r))) + (r.unit == "1" || r.unit.empty() ? "" : " " + r.unit);
 }
 
 /// The two output formats behind one interface, so both say the same.
