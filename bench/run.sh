@@ -29,6 +29,10 @@ for e in $engines; do
     scripts/build.sh -DMILLDYN_BENCH=ON
 done
 first="$(dir_of "${engines%% *}")"
+# Every program single-threaded (configurations/s and times are per core;
+# NumPy's BLAS would otherwise start threads) and timed by its CPU time
+# (bench/clocks.h, time.process_time), the wall time beside it.
+export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
 # Each line of an engine's programs gets its engine's name ("Release", "checked").
 engine_runs() {  # engine_runs PROGRAM ARGS...: every engine, lines tagged
   local p=$1; shift
