@@ -43,7 +43,7 @@ engine_runs() {  # engine_runs PROGRAM ARGS...: every engine, lines tagged
     "$d/$p" "$@" | sed "s/^{/{\"engine\": \"$tag\", /"
   done
 }
-echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, engines: $engines"
+echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(getconf _NPROCESSORS_ONLN) cores, engines: $engines"  # getconf: nproc obeys OMP_NUM_THREADS
 out=$(mktemp)
 "$first"/bench_odeint burr 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
 "$first"/bench_odeint burr "$tol" "$repeats" >> "$out"
