@@ -31,18 +31,18 @@
 // Steady window: the second half of [start_time of the reference (its
 // first sample without one), T1], T1 = --steady-end (a switch-off time)
 // or else the reference's last sample.
-// Cost: process CPU time (std::clock, not wall: the machine is shared),
+// Cost: process CPU time (bench/clocks.h, not wall: the machine is shared),
 // the median over --repeat rounds (default 3) that alternate the points
 // (round k runs every point once); realizations and steps are counted.
 // Runs go from loose to tight accuracy; a run that passes the budget (CPU
 // seconds) is stopped (status "budget") and that integrator's tighter
 // accuracies are skipped (status "skipped").
 
+#include "clocks.h"
 #include "driver/analyses/Analysis.h"
 
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -78,8 +78,8 @@ struct Run {
 
 Run runOnce(const std::string& model, const std::vector<Override>& overrides, double budget) {
     Run run;
-    const std::clock_t start = std::clock();
-    auto elapsed = [&] { return double(std::clock() - start) / CLOCKS_PER_SEC; };
+    const bench::Stopwatch watch;
+    auto elapsed = [&] { return watch.cpu(); };
     try {
         const ModelSpec spec = readModelFile(model, defaultModelReader(), overrides);
         run.result = runAnalysis(spec, [&](double, double) {
@@ -214,10 +214,7 @@ DesignerErrors designerErrors(const AnalysisResult& r, const AnalysisResult& ref
     return e;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
+using bench::median;
 
 }  // namespace
 

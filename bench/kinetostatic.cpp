@@ -1,18 +1,17 @@
 // Kinetostatic throughput (issue #7 §2: >= 50,000 configurations/s per
 // core): the `turn` scenario of the planetary-gear models (one carrier turn
 // at steady speed) with its angle count raised, at the fidelity levels
-// rigid_charge and held_charge, single-threaded. For each: configurations/s
-// of milldyn's kinetostatic analysis, Simbody realizations per
+// rigid_charge and held_charge, single-threaded. For each: configurations
+// per CPU second of milldyn's kinetostatic analysis (per wall second beside it), Simbody realizations per
 // configuration (counted by the System), and the floor: the same system
 // with the mechanism placed and realized to Stage::Acceleration once per
 // configuration. One JSON line per model and level.
 //   bench_kinetostatic [POINTS] [REPEATS]
 
+#include "clocks.h"
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -21,10 +20,6 @@
 using namespace milldyn;
 
 namespace {
-
-double seconds(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 /// Realization counts of a System (stages Velocity and Acceleration).
 struct Counts {
@@ -50,36 +45,36 @@ int main(int argc, char** argv) {
                                                   {"outputs.plots", "false"}});
             // milldyn's analysis (building the scene included); the observer
             // sees every angle and reads the System's realization counters.
-            std::vector<double> walls;
+            std::vector<double> walls, cpus;
             Counts first, last;
             for (int r = 0; r < repeats; ++r) {
                 bool seen = false;
-                const auto t0 = std::chrono::steady_clock::now();
+                const bench::Stopwatch watch;
                 runAnalysis(spec, {}, [&](const Scene& scene, const SimTK::State&, double) {
                     (seen ? last : first) = counts(scene.system());
                     seen = true;
                 });
-                walls.push_back(seconds(t0));
+                walls.push_back(watch.wall());
+                cpus.push_back(watch.cpu());
             }
-            std::sort(walls.begin(), walls.end());
-            const double wall = walls[walls.size() / 2];
+            const double wall = bench::median(walls), cpu = bench::median(cpus);
             const double perConfig = points > 1 ? 1.0 / (points - 1) : 0.0;
 
             // The floor: the same system, mechanism placed (carrier angle and
             // speed, the elements' initializers) and one realization.
             const ElementSpec& sc = spec.scenario;
-            std::vector<double> floorWalls, buildWalls;
+            std::vector<double> floorWalls, floorCpus, buildCpus;
             for (int r = 0; r < repeats; ++r) {
-                const auto tb = std::chrono::steady_clock::now();
+                const bench::Stopwatch building;
                 auto scene = buildScene(spec);
                 SimTK::State state = initialState(*scene, spec);
-                buildWalls.push_back(seconds(tb));
+                buildCpus.push_back(building.cpu());
                 state.setTime(sc.number("time"));
                 const SimTK::MobilizedBody& carrier = scenarioBody(*scene, sc, "carrier").mobod;
                 const double from = sc.number("angle_from"), to = sc.number("angle_to"),
                              speed = sc.number("carrier_speed");
                 double sum = 0;  // keeps the realizations from being optimised away
-                const auto t0 = std::chrono::steady_clock::now();
+                const bench::Stopwatch watch;
                 for (int k = 0; k < points; ++k) {
                     carrier.setOneQ(state, SimTK::MobilizerQIndex(0), from + (to - from) * k / (points - 1));
                     carrier.setOneU(state, SimTK::MobilizerUIndex(0), speed);
@@ -87,19 +82,22 @@ int main(int argc, char** argv) {
                     scene->system().realize(state, SimTK::Stage::Acceleration);
                     sum += state.getUDot()[0];
                 }
-                floorWalls.push_back(seconds(t0));
+                floorWalls.push_back(watch.wall());
+                floorCpus.push_back(watch.cpu());
                 if (sum != sum) std::fprintf(stderr, "non-finite accelerations\n");
             }
-            std::sort(floorWalls.begin(), floorWalls.end());
-            std::sort(buildWalls.begin(), buildWalls.end());
-            const double floorWall = floorWalls[floorWalls.size() / 2];
-            std::printf("{\"model\": \"%s\", \"level\": \"%s\", \"points\": %d, \"wall_s\": %.6e, "
-                        "\"configurations_per_s\": %.4g, \"acceleration_realizations_per_configuration\": %.4g, "
+            const double floorWall = bench::median(floorWalls), floorCpu = bench::median(floorCpus);
+            // Configurations/s per core: from the CPU time (the wall time,
+            // which counts other processes' turns on a shared core, beside it).
+            std::printf("{\"model\": \"%s\", \"level\": \"%s\", \"points\": %d, \"wall_s\": %.6e, \"cpu_s\": %.6e, "
+                        "\"configurations_per_s\": %.4g, \"configurations_per_wall_s\": %.4g, "
+                        "\"acceleration_realizations_per_configuration\": %.4g, "
                         "\"velocity_realizations_per_configuration\": %.4g, \"floor_wall_s\": %.6e, "
-                        "\"floor_configurations_per_s\": %.4g, \"scene_build_s\": %.4g}\n",
-                        model, level, points, wall, points / wall, (last.acceleration - first.acceleration) * perConfig,
-                        (last.velocity - first.velocity) * perConfig, floorWall, points / floorWall,
-                        buildWalls[buildWalls.size() / 2]);
+                        "\"floor_cpu_s\": %.6e, \"floor_configurations_per_s\": %.4g, \"scene_build_cpu_s\": %.4g}\n",
+                        model, level, points, wall, cpu, points / cpu, points / wall,
+                        (last.acceleration - first.acceleration) * perConfig,
+                        (last.velocity - first.velocity) * perConfig, floorWall, floorCpu, points / floorCpu,
+                        bench::median(buildCpus));
             std::fflush(stdout);
         }
     return 0;

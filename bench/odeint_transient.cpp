@@ -1,6 +1,6 @@
 // Baseline: a transient scene of bench/transient_scenes.h integrated by
 // Boost.Odeint (dopri5 and rosenbrock4) at a given relative tolerance
-// (absolute: 1e-3 of it); one JSON line per method: wall time (median of
+// (absolute: 1e-3 of it); one JSON line per method: wall and CPU times (medians of
 // repeats), right-hand-side calls of dopri5, the compared speed.
 //   bench_odeint SCENE [TOL] [REPEATS] [dopri5]      SCENE: burr | roll
 // "dopri5" as the last argument: dopri5 only (the reference at 1e-12;

@@ -29,6 +29,10 @@ for e in $engines; do
     scripts/build.sh -DMILLDYN_BENCH=ON
 done
 first="$(dir_of "${engines%% *}")"
+# Every program single-threaded (configurations/s and times are per core;
+# NumPy's BLAS would otherwise start threads) and timed by its CPU time
+# (bench/clocks.h, time.process_time), the wall time beside it.
+export OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1
 # Each line of an engine's programs gets its engine's name ("Release", "checked").
 engine_runs() {  # engine_runs PROGRAM ARGS...: every engine, lines tagged
   local p=$1; shift
@@ -39,7 +43,7 @@ engine_runs() {  # engine_runs PROGRAM ARGS...: every engine, lines tagged
     "$d/$p" "$@" | sed "s/^{/{\"engine\": \"$tag\", /"
   done
 }
-echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores, engines: $engines"
+echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(getconf _NPROCESSORS_ONLN) cores, engines: $engines"  # getconf: nproc obeys OMP_NUM_THREADS
 out=$(mktemp)
 "$first"/bench_odeint burr 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
 "$first"/bench_odeint burr "$tol" "$repeats" >> "$out"

@@ -5,11 +5,11 @@
 // read by bench/report.py.
 
 #include "burr_equations.h"
+#include "clocks.h"
 #include "roll_equations.h"
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
@@ -90,25 +90,25 @@ struct RunOutcome {
     long realizations = 0;
 };
 
-/// Runs `run` `repeats` times and prints the median wall time, the
-/// realizations of a run and the time per realization as one JSON line.
+/// Runs `run` `repeats` times and prints the median wall and CPU times, the
+/// realizations of a run and the CPU time per realization as one JSON line.
 template <class Run>
 void timeAndPrint(const std::string& method, const std::string& tolerance, int repeats, Run run) {
-    std::vector<double> walls;
+    std::vector<double> walls, cpus;
     RunOutcome outcome;
     for (int k = 0; k < repeats; ++k) {
-        const auto t0 = std::chrono::steady_clock::now();
+        const Stopwatch watch;
         outcome = run();
-        walls.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        walls.push_back(watch.wall());
+        cpus.push_back(watch.cpu());
     }
-    std::sort(walls.begin(), walls.end());
-    const double wall = walls[walls.size() / 2];
+    const double wall = median(walls), cpu = median(cpus);
     if (outcome.values.size() != 3) throw std::runtime_error(method + ": a comparison time was not sampled");
-    std::printf("{\"method\": \"%s\", \"tolerance\": %s, \"wall_s\": %.6e, ", method.c_str(), tolerance.c_str(),
-                wall);
+    std::printf("{\"method\": \"%s\", \"tolerance\": %s, \"wall_s\": %.6e, \"cpu_s\": %.6e, ", method.c_str(),
+                tolerance.c_str(), wall, cpu);
     if (outcome.realizations > 0)
         std::printf("\"realizations\": %ld, \"us_per_realization\": %.4g, ", outcome.realizations,
-                    1e6 * wall / outcome.realizations);
+                    1e6 * cpu / outcome.realizations);
     std::printf("\"omega2\": [%.15g, %.15g, %.15g]}\n", outcome.values[0], outcome.values[1], outcome.values[2]);
     std::fflush(stdout);
 }

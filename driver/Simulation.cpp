@@ -749,15 +749,30 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         }
     };
 
+    // The last state stepTo returned (time and y): what a failure is judged
+    // from when the integrator's state holds the failed trial (non-finite:
+    // on Debian's checked engine Simbody's NaN checks throw inside the trial
+    // step, so CPodes gives up with the trial's NaN in its state).
+    double tReturned = t0;
+    SimTK::Vector yReturned = integ.getState().getY();
     while (true) {
         const double hardStop = nextSwitch < switchTimes.size() ? switchTimes[nextSwitch] : endTime;
         SimTK::Integrator::SuccessfulStepStatus status;
         try {
             status = integ.stepTo(own ? hardStop : std::min(nextSampleTime(), hardStop), hardStop);
         } catch (const std::exception& e) {
-            throw integrationFailure(m_scene, m_settings.name, integ.getState(), e.what());
+            SimTK::State last = integ.getState();
+            bool finite = true;
+            for (int i = 0; i < last.getNY(); ++i) finite = finite && std::isfinite(last.getY()[i]);
+            if (!finite) {
+                last.setTime(tReturned);
+                last.updY() = yReturned;
+            }
+            throw integrationFailure(m_scene, m_settings.name, last, e.what());
         }
         const SimTK::State& s = integ.getState();
+        tReturned = s.getTime();
+        yReturned = s.getY();
         system.realize(s, own ? SimTK::Stage::Acceleration : SimTK::Stage::Velocity);
 
         if (watch && s.getTime() >= watch->notBefore) {
