@@ -17,8 +17,10 @@
 // The oracle's parameters are the stated free parameters (the oracle's
 // suggestedSteelDrumMaterial and models/planetary_belt_200x1000.yaml); the
 // geometry of a case enters the model file by --set and, for the arm l_OA
-// and gravity (lists in the file, which --set cannot change), by replacing
-// their text.
+// and gravity (lists in the file), by replacing their text: written before
+// --set took lists; it takes them now (the seed-002 test of
+// tests/validation/NewParametersTest.cpp sets the arm through the joints'
+// location), and the cases could do the same.
 
 #include "driver/ModelFile.h"
 #include "driver/analyses/Analysis.h"
