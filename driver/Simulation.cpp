@@ -918,9 +918,20 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
         for (int i = 0; i < nq; ++i) s.updQ()[i] = x[i];
         for (int i = 0; i < nu; ++i) s.updU()[i] = x[nq + i];
     };
+    // Kept reactions (journal loads) consistent with each trial state: a
+    // journal's friction at steady running is its running load's, not the
+    // zero load of a state never realized (the Kloss speed without it).
+    auto keepLoadsConsistent = [&](SimTK::State& s) {
+        for (int k = 0; !scene.laggedValues().empty(); ++k) {
+            const double change = refreshLaggedValues(scene, s);
+            if (!(change > kLaggedTolerance)) break;
+            if (k >= 50) throw keptLoadsFailure(scene, s, "no convergence in 50 iterations");
+        }
+    };
     auto residual = [&](const Eigen::VectorXd& x) {
         SimTK::State s = state;
         setX(s, x);
+        keepLoadsConsistent(s);
         system.realize(s, SimTK::Stage::Acceleration);
         Eigen::VectorXd r(nr);
         for (int i = 0; i < nu; ++i) r[i] = s.getUDot()[i];
@@ -954,6 +965,7 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
         if (scale == 1 && dx.norm() <= 1e-13 * (1 + x.norm())) break;
     }
     setX(state, x);
+    keepLoadsConsistent(state);
     system.realize(state, SimTK::Stage::Acceleration);
     // Converged means the accelerations are negligible against what the
     // forces alone would produce over one second of running.

@@ -53,6 +53,10 @@ TEST(PowerSplit, DrumWithLoadAndJournalMatchesTheClosedForm) {
     EXPECT_NEAR(value(r, "mean_power.stored_change"), 0, tol * M * w);
     EXPECT_LT(std::abs(value(r, "mean_power.residual_relative")), 1e-8);
     EXPECT_EQ(r.find("mean_power.damping"), nullptr);  // nothing damps in this scene
+    // The solved steady state itself (t = 0) carries the journal's friction:
+    // it was the frictionless Kloss speed (155.835 rad/s against 155.523)
+    // and the run settled from there.
+    EXPECT_NEAR(r.value(0, "drum.speed"), w, 1e-9 * w);
     // Started from the solved steady state and held it: a verdict, not silence.
     EXPECT_EQ(r.verdict, "steady_held") << r.verdictText;
     EXPECT_NE(r.verdictText.find("started from the solved steady running"), std::string::npos) << r.verdictText;
