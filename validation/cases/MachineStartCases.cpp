@@ -66,9 +66,11 @@ constexpr double kStartTimeTolerance = 1e-2;
 // paper's first-order method); the model's include friction, which turns the
 // gear force at B by M_trB/r: |R_B| changes by ~f·(d_B/2)/r·tan 20° = 7e-4
 // of itself, |R_A| by less (A's friction only tilts the belt's pull across
-// the dominant vertical load: second order). The carrier's speed ripple
-// enters |R_B| ~ ω² at second order; 2 ms samples over ~90 per turn of a
-// smooth periodic load make the mean's and the max's sampling error < 1e-4.
+// the dominant vertical load: second order). The oracle runs at the mean
+// speed; the model's carrier speed ripples ±5.5e-4 over a turn (measured),
+// which averages out of the mean but enters the max of |R| ~ ω² at first
+// order, ±1.1e-3 (with friction, up to ~1.8e-3 in the max). 2 ms samples,
+// ~90 per turn of a smooth periodic load, make the sampling error < 1e-4.
 // Budget 5e-3, as (a).
 constexpr double kBearingTolerance = 5e-3;
 // Energy balance of an integration at accuracy 1e-6.
