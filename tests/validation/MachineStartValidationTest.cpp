@@ -27,7 +27,7 @@ TEST(MachineStartValidation, EveryJudgedComparisonPasses) {
             EXPECT_EQ(r.status, "pass") << r.caseName << ": " << r.quantity << " " << r.multibody.value_or(NAN)
                                         << " vs " << r.oracle << " rel " << r.relError;
         }
-    EXPECT_EQ(judged, 8);
+    EXPECT_EQ(judged, 14);
 }
 
 TEST(MachineStartValidation, EveryCaseRanAndTheDifferentStartsAreFlagged) {
@@ -45,8 +45,9 @@ TEST(MachineStartValidation, EveryCaseRanAndTheDifferentStartsAreFlagged) {
     }
     EXPECT_EQ(cases, (std::set<std::string>{"planetary_motor_start_belt_capacity", "planetary_motor_start_steady",
                                             "planetary_motor_start_time", "planetary_motor_start_prescribed",
-                                            "planetary_motor_start_energy_balance", "burr_mill_loaded_start_time"}));
-    EXPECT_EQ(flagged, 3);
+                                            "planetary_motor_start_energy_balance", "planetary_motor_start_bearings",
+                                            "planetary_motor_start_bearings_prescribed", "burr_mill_loaded_start_time"}));
+    EXPECT_EQ(flagged, 9);
 }
 
 }  // namespace

@@ -87,38 +87,43 @@ double PlanetaryMotorStartOracle::calcMillInertia() const {
     return 0.5 * (m_mill.calcReducedInertia(0.0) + m_mill.calcReducedInertia(kPi));
 }
 
-double PlanetaryMotorStartOracle::calcCarrierLoadTorque(double w) const {
+PlanetaryRunningLoads PlanetaryMotorStartOracle::calcRunningLoads(double w, double phi) const {
     const PlanetaryGearParameters& p = m_mill.getParameters();
     const double kappa = m_mill.calcSpeedRatio();
     const double s = (m_belt.drivenRadius - m_belt.driverRadius) / m_belt.centreDistance;
     const double cb = std::sqrt(1 - s * s);
     const Eigen::Vector2d u(std::cos(m_belt.lineAngle), std::sin(m_belt.lineAngle));  // A toward the motor
     const Eigen::Vector2d n(-u.y(), u.x());                                             // z × u
+    // The drums (and the charges rigid with them) turn by κφ in G from
+    // hanging at φ = 0.
+    PlanetaryGearMotionState st;
+    st.carrierAngle = phi;
+    st.carrierRate = w;
+    st.carrierAcceleration = 0;
+    st.chargeDirection = {{-kPi / 2 + kappa * phi, -kPi / 2 + kappa * phi}};
+    const PlanetaryGearLoads L = m_mill.calcLoads(st, ChargeMotion::kRotatesWithDrum);
+    const double rest = L.driveTorque - L.carrierFrictionTorque;
+    // The belt's pull on the carrier's sheave: (T1 + T2) cos β toward the
+    // motor, (T1 − T2) sin β across (tight span on the side the torque
+    // needs); the ground at A takes it. Fixed point in the torque M.
+    PlanetaryRunningLoads out;
+    out.driveTorque = rest;
+    for (int it = 0; it < 20; ++it) {
+        const double dT = out.driveTorque / m_belt.drivenRadius;
+        const Eigen::Vector2d pull = 2 * m_belt.pretension * cb * u + dT * s * n;
+        out.journalA = L.carrierBearingForce - pull;
+        out.driveTorque = rest + out.journalA.norm() * p.frictionCoefficient * p.carrierJournalDiameter / 2;
+    }
+    out.journalB1 = L.drums[0].bearingForce;
+    out.journalB2 = L.drums[1].bearingForce;
+    return out;
+}
+
+double PlanetaryMotorStartOracle::calcCarrierLoadTorque(double w) const {
+    // Over one carrier turn; the frictionless part averages to zero.
     const int samples = 360;
     double sum = 0;
-    for (int j = 0; j < samples; ++j) {
-        // One carrier turn; the drums (and the charges rigid with them) turn
-        // by κφ in G from hanging at φ = 0.
-        const double phi = 2 * kPi * j / samples;
-        PlanetaryGearMotionState st;
-        st.carrierAngle = phi;
-        st.carrierRate = w;
-        st.carrierAcceleration = 0;
-        st.chargeDirection = {{-kPi / 2 + kappa * phi, -kPi / 2 + kappa * phi}};
-        const PlanetaryGearLoads L = m_mill.calcLoads(st, ChargeMotion::kRotatesWithDrum);
-        const double rest = L.driveTorque - L.carrierFrictionTorque;
-        // The belt's pull on the carrier's sheave: (T1 + T2) cos β toward the
-        // motor, (T1 − T2) sin β across (tight span on the side the torque
-        // needs); the ground at A takes it. Fixed point in the torque M.
-        double M = rest;
-        for (int it = 0; it < 20; ++it) {
-            const double dT = M / m_belt.drivenRadius;
-            const Eigen::Vector2d pull = 2 * m_belt.pretension * cb * u + dT * s * n;
-            const double RA = (L.carrierBearingForce - pull).norm();
-            M = rest + RA * p.frictionCoefficient * p.carrierJournalDiameter / 2;
-        }
-        sum += M;
-    }
+    for (int j = 0; j < samples; ++j) sum += calcRunningLoads(w, 2 * kPi * j / samples).driveTorque;
     return sum / samples;
 }
 

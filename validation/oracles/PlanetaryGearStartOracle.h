@@ -71,6 +71,15 @@ double calcBeltCapacity(const VBelt& b);
 /// Tight-span tension when the belt slips, 2·T0·E/(E + 1) [N].
 double calcSlippingTightTension(const VBelt& b);
 
+/// The running mill's journal loads and carrier torque at one carrier angle
+/// (SI, vectors in G: ground on carrier at A, carrier pin on drum at B1, B2).
+struct PlanetaryRunningLoads {
+    double driveTorque = 0;  ///< belt torque on the carrier, friction (21) included [N*m]
+    Eigen::Vector2d journalA{Eigen::Vector2d::Zero()};   ///< R_A with the belt's pull [N]
+    Eigen::Vector2d journalB1{Eigen::Vector2d::Zero()};  ///< R_B1 [N]
+    Eigen::Vector2d journalB2{Eigen::Vector2d::Zero()};  ///< R_B2 [N]
+};
+
 /// The mill on the carrier, as a load for the motor: the PlanetaryGearOracle's
 /// steady kinetostatics (charges turning with the drums, ε = 0) averaged
 /// over a carrier turn, with the belt's pull on the carrier's journal A.
@@ -88,6 +97,13 @@ public:
     /// belt's pull (T1 + T2 = 2·T0, T1 − T2 = M/r2, solved by fixed point);
     /// the frictionless part averages to zero.
     double calcCarrierLoadTorque(double carrierSpeed) const;
+    /// Steady running (ε = 0) at carrier speed ω [rad/s] and carrier angle φ
+    /// [rad] (A→B2 from +x), the drums and the charges rigid with them
+    /// turned by κφ from hanging at φ = 0: the journal loads of
+    /// PlanetaryGearOracle::calcLoads (frictionless reactions, the paper's
+    /// first-order method) with the belt's pull taken by the ground at A,
+    /// and the drive torque (20) with A's friction from that load.
+    PlanetaryRunningLoads calcRunningLoads(double carrierSpeed, double carrierAngle) const;
     /// Steady motor speed where M_motor(ω) = M_load(ω/i)/i [rad/s].
     double calcSteadyMotorSpeed() const;
     /// Time [s] for the carrier to reach `fraction` of its steady speed from
