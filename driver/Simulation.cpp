@@ -256,6 +256,16 @@ AnalysisError keptLoadsFailure(const Scene& scene, const SimTK::State& s, const 
                          timeText(s.getTime()) + ": " + culprit + " (kept journal loads, iterated at each step end)");
 }
 
+/// Makes every kept reaction (journal load) consistent with `state`, by
+/// fixed point: a lagged load of 0 would give the state no friction.
+void settleLaggedValues(const Scene& scene, SimTK::State& state) {
+    for (int k = 0; !scene.laggedValues().empty(); ++k) {
+        const double change = refreshLaggedValues(scene, state);
+        if (!(change > kLaggedTolerance)) break;
+        if (k >= 50) throw keptLoadsFailure(scene, state, "no convergence in 50 iterations");
+    }
+}
+
 /// Copies every discrete variable (kept journal loads, switch flags) of
 /// `from` into `to`, a State of the same System: what a sample between two
 /// step ends takes from the step's end, without a whole State copy.
@@ -528,11 +538,7 @@ void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
         if (e.time <= state.getTime()) e.apply(state);
     // Kept reactions (journal loads) start consistent with the start state,
     // lagged or not: a lagged load of 0 would give the first step no friction.
-    for (int k = 0; !m_scene.laggedValues().empty(); ++k) {
-        const double change = refreshLaggedValues(m_scene, state);
-        if (!(change > kLaggedTolerance)) break;
-        if (k >= 50) throw keptLoadsFailure(m_scene, state, "no convergence in 50 iterations");
-    }
+    settleLaggedValues(m_scene, state);
     m_integrator = makeIntegrator(m_scene.system(), m_settings.name);
     m_integrator->setAccuracy(m_settings.accuracy);
     m_integrator->setInternalStepLimit(kInternalStepLimit);
@@ -918,20 +924,13 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
         for (int i = 0; i < nq; ++i) s.updQ()[i] = x[i];
         for (int i = 0; i < nu; ++i) s.updU()[i] = x[nq + i];
     };
-    // Kept reactions (journal loads) consistent with each trial state: a
-    // journal's friction at steady running is its running load's, not the
-    // zero load of a state never realized (the Kloss speed without it).
-    auto keepLoadsConsistent = [&](SimTK::State& s) {
-        for (int k = 0; !scene.laggedValues().empty(); ++k) {
-            const double change = refreshLaggedValues(scene, s);
-            if (!(change > kLaggedTolerance)) break;
-            if (k >= 50) throw keptLoadsFailure(scene, s, "no convergence in 50 iterations");
-        }
-    };
     auto residual = [&](const Eigen::VectorXd& x) {
         SimTK::State s = state;
         setX(s, x);
-        keepLoadsConsistent(s);
+        // Kept reactions (journal loads) consistent with each trial state: a
+        // journal's friction at steady running is its running load's, not the
+        // zero load of a state never realized (the Kloss speed without it).
+        settleLaggedValues(scene, s);
         system.realize(s, SimTK::Stage::Acceleration);
         Eigen::VectorXd r(nr);
         for (int i = 0; i < nu; ++i) r[i] = s.getUDot()[i];
@@ -965,7 +964,7 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
         if (scale == 1 && dx.norm() <= 1e-13 * (1 + x.norm())) break;
     }
     setX(state, x);
-    keepLoadsConsistent(state);
+    settleLaggedValues(scene, state);
     system.realize(state, SimTK::Stage::Acceleration);
     // Converged means the accelerations are negligible against what the
     // forces alone would produce over one second of running.

@@ -282,11 +282,14 @@ std::vector<ValidationRow> machineStartCases(const std::string& filter) {
         for (std::size_t i = r.rows.size(); i-- > 0 && r.value(i, "carrier.angle") >= aEnd - 10 * M_PI;)
             t0 = r.rows[i][0];
         const double wMean = meanOver(r, "carrier.speed", t0);
+        // The oracle's turn, once for all three journals.
         const int samples = 360;
+        std::vector<oc::PlanetaryRunningLoads> turn;
+        for (int k = 0; k < samples; ++k) turn.push_back(oracle.calcRunningLoads(wMean, 2 * M_PI * k / samples));
         for (const Journal& j : kJournals) {
             double mean = 0, max = 0;
-            for (int k = 0; k < samples; ++k) {
-                const double R = (oracle.calcRunningLoads(wMean, 2 * M_PI * k / samples).*j.running).norm();
+            for (const oc::PlanetaryRunningLoads& loads : turn) {
+                const double R = (loads.*j.running).norm();
                 mean += R / samples;
                 max = std::max(max, R);
             }
