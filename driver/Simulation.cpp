@@ -912,6 +912,11 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
     // Steady running is about the mean load: periodic excitations off while
     // solving, back on in the state returned.
     scene.setExcitationsOn(state, false);
+    // Steady running is the machine after its start: starters at their end
+    // (delta, full voltage, rated frequency, rotor short-circuited), clutches
+    // engaged — in the state returned too.
+    for (const StartSequence& q : scene.startSequences())
+        if (q.finish) q.finish(state);
     const int nq = state.getNQ(), nu = state.getNU();
     const auto hints = scene.speedHints();
     for (const auto& b : scene.bodies()) b.mobod.setOneU(state, SimTK::MobilizerUIndex(0), hints.at(b.name));

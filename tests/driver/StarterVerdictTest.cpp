@@ -7,10 +7,14 @@
 // with time) or stalled (a sequence that waits on the shaft).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "driver/Cli.h"
 #include "driver/analyses/Analysis.h"
@@ -212,6 +216,47 @@ TEST(StarterVerdict, ClutchEngagedAndLockedCompletes) {
     const AnalysisResult r = runModelFile(clutchModel("clutch_locked", 2.5, 150, 20, 6), {});
     EXPECT_EQ(r.verdict, "completed") << r.verdictText;
     EXPECT_TRUE(says(r, "clutch engaged and locked")) << r.verdictText;
+}
+
+// Steady running is the machine after its start: whatever the starter, a
+// run from `initial_state: steady` starts where the direct-on-line motor
+// runs, and stays there. Kloss against 60 N*m (closed form): sn = 0.02,
+// sk = sn·(λ + √(λ² − 1)) = 0.0958258, Mk = 2.5·97.4 = 243.5 N*m,
+// s = sk·(Mk/M − √((Mk/M)² − 1)) at M = 60 N*m, ω = ωc·(1 − s).
+TEST(StarterVerdict, SteadyRunningStartsWithEveryStarterAtItsEnd) {
+    const double wc = 1500 * 3.14159265358979323846 / 30, sn = 0.02, lambda = 2.5;
+    const double sk = sn * (lambda + std::sqrt(lambda * lambda - 1)), ratio = lambda * 97.4 / 60;
+    const double omega = wc * (1 - sk * (ratio - std::sqrt(ratio * ratio - 1)));
+    const std::vector<std::pair<std::string, std::string>> starters = {
+        {"star_delta", "    starter: star_delta\n    switch_times: [2 s]\n"},
+        {"star_delta_speed", "    starter: star_delta\n    switch_speeds: [160 rad/s]\n"},
+        {"soft_start", "    starter: soft_start\n    initial_voltage: 0.5\n    ramp_time: 10 s\n"},
+        {"rotor_resistance", "    starter: rotor_resistance\n    resistance_ratios: [4, 2]\n    switch_times: [1 s, 2 s]\n"},
+        {"liquid_resistance", "    starter: liquid_resistance\n    initial_resistance_ratio: 10\n    ramp_time: 10 s\n"},
+        {"frequency_converter", "    starter: frequency_converter\n    initial_frequency: 0.1\n    ramp_time: 5 s\n"}};
+    for (const auto& [name, lines] : starters) {
+        AnalysisResult r = runModelFile(benchModel("steady_" + name, lines, 3, 60), {{"scenario.initial_state", "steady"}});
+        EXPECT_EQ(r.verdict, "steady_held") << name << ": " << r.verdictText;
+        const std::size_t col = static_cast<std::size_t>(
+            std::find(r.columnNames.begin(), r.columnNames.end(), "shaft.speed") - r.columnNames.begin());
+        ASSERT_LT(col, r.columnNames.size());
+        EXPECT_NEAR(r.rows.front()[col], omega, 1e-6 * omega) << name;
+        EXPECT_NEAR(r.rows.back()[col], omega, 1e-6 * omega) << name;
+    }
+}
+
+// A clutch that engages at 5 s is engaged in steady running: the drum runs
+// with the motor from t = 0.
+TEST(StarterVerdict, SteadyRunningHasTheClutchEngaged) {
+    AnalysisResult r = runModelFile(clutchModel("clutch_steady", 5, 150, 20, 1), {{"scenario.initial_state", "steady"}});
+    const auto column = [&](const std::string& name) {
+        const auto it = std::find(r.columnNames.begin(), r.columnNames.end(), name);
+        EXPECT_NE(it, r.columnNames.end()) << name;
+        return static_cast<std::size_t>(it - r.columnNames.begin());
+    };
+    const double motor = r.rows.front()[column("motor_shaft.speed")], drum = r.rows.front()[column("drum.speed")];
+    EXPECT_GT(motor, 150.0);
+    EXPECT_NEAR(drum, motor, 0.01);
 }
 
 TEST(StarterVerdict, CliPrintsTheUnfinishedStarterAndNoStartTime) {
