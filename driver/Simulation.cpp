@@ -1,4 +1,5 @@
 #include "driver/Simulation.h"
+#include "plugins/scene/Format.h"
 
 #include "plugins/scene/EnergyMeter.h"
 
@@ -94,12 +95,7 @@ std::string cpodesError() {
     return body == std::string::npos ? "" : simbodyMessage(text.substr(body + 1));
 }
 
-std::string number(double v) {
-    std::ostringstream s;
-    s.precision(4);
-    s << v;
-    return s.str();
-}
+std::string number(double v) { return formatNumber(v, 4); }
 
 /// Which element made a failed integration impossible, from the last
 /// accepted state: a force element whose generalized force is not finite,

@@ -1,4 +1,5 @@
 #include "plugins/motors/InductionMotor.h"
+#include "plugins/scene/Format.h"
 
 #include "plugins/scene/ElementRegistry.h"
 
@@ -225,11 +226,7 @@ void rejectKeysOfOthers(const ElementSpec& e, const std::string& chosenKey,
     }
 }
 
-std::string num(double v) {
-    std::ostringstream o;
-    o << v;
-    return o.str();
-}
+std::string num(double v) { return formatNumber(v); }
 
 void checkIncreasing(const ElementSpec& e, const std::string& key, const std::string& what) {
     const std::vector<double>& v = e.numbers(key);
