@@ -55,10 +55,9 @@ TEST(DqMachineOracle, LockedRotorTransientSettlesOntoTheHeldResponse) {
 }
 
 TEST(DqMachineOracle, FreeStartKeepsItsEnergyAndRunsUpToNearSynchronous) {
-    // A free start of an inertia: ∫P_in dt = ∫P_cu dt + ½Jω² + W_field(end),
-    // W_field from the end currents: (3/4)·(Ls|is|² + 2Lm·Re(is·conj(ir)) + Lr|ir|²)
-    // is not sampled, so check the bound instead: input − copper − kinetic
-    // lies between 0 and the no-load field energy (3/4)·Ls·|is_0|²·(1 + small).
+    // A free start of an inertia: ∫P_in dt = ∫P_cu dt + ½Jω² + W_field(end).
+    // Trapezoidal sums of the 10 µs samples: their error on the 50/100 Hz
+    // ripple is at most ~(ω·h)²/12 ≈ 1e-6 of the energies (seen 5.5e-9).
     const DqMachine m = mslMachine();
     const double J = 2, h = 1e-5;
     const auto run = dqMachineStart(m, {}, J, [](double) { return 0.0; }, h, 2.0, 1);
@@ -68,14 +67,12 @@ TEST(DqMachineOracle, FreeStartKeepsItsEnergyAndRunsUpToNearSynchronous) {
         cu += 0.5 * h * (run[i].copperLoss + run[i - 1].copperLoss);
     }
     const double kinetic = 0.5 * J * run.back().speed * run.back().speed;
-    const double ws = 2 * M_PI * 50 / 2, ls = m.lls + m.lm;
-    const double noLoadField = 0.75 * ls * std::pow(std::sqrt(2.0) * 100 / (2 * M_PI * 50 * ls), 2);
-    EXPECT_GT(in - cu - kinetic, 0.5 * noLoadField);
-    EXPECT_LT(in - cu - kinetic, 1.5 * noLoadField);
+    EXPECT_NEAR(in, cu + kinetic + run.back().fieldEnergy, 1e-7 * in);  // seen 5.5e-9
+    // The field at the end is about the no-load magnetising field (3/4)·Ls·|V̂/(ω_e·Ls)|².
+    const double ls = m.lls + m.lm, noLoad = 0.75 * ls * std::pow(std::sqrt(2.0) * 100 / (2 * M_PI * 50 * ls), 2);
+    EXPECT_NEAR(run.back().fieldEnergy, noLoad, 0.05 * noLoad);
+    const double ws = 2 * M_PI * 50 / 2;
     EXPECT_NEAR(run.back().speed, ws, 1e-3 * ws);
-    const double t95 = dqTimeToFraction(run, 0.95);
-    EXPECT_GT(t95, 0.5);
-    EXPECT_LT(t95, 2.0);
 }
 
 TEST(DqMachineOracle, RejectsAStepThatMissesTheSwitchAndATimeToNowhere) {

@@ -95,6 +95,9 @@ std::vector<DqSample> dqMachineStart(const DqMachine& machine, const DqSupply& s
         s.statorCurrent = std::sqrt(is2 / 2);
         s.inputPower = 1.5 * vqs * x[0];
         s.copperLoss = 1.5 * (machine.rs * is2 + machine.rr * ir2);
+        const double lqs = mc.ls * x[0] + machine.lm * x[2], lds = mc.ls * x[1] + machine.lm * x[3];
+        const double lqr = machine.lm * x[0] + mc.lr * x[2], ldr = machine.lm * x[1] + mc.lr * x[3];
+        s.fieldEnergy = 0.75 * (x[0] * lqs + x[1] * lds + x[2] * lqr + x[3] * ldr);
         out.push_back(s);
     };
     sample(0.0, peak * supply.factor(0.0, 0.0));

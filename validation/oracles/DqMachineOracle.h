@@ -56,6 +56,7 @@ struct DqSample {
     double statorCurrent = 0; ///< rms phase current √((i_qs² + i_ds²)/2) [A]
     double inputPower = 0;    ///< (3/2)(v_qs·i_qs + v_ds·i_ds) [W]
     double copperLoss = 0;    ///< (3/2)(r_s·|i_s|² + r_r·|i_r|²) [W]
+    double fieldEnergy = 0;   ///< (3/4)·(i_qs·λ_qs + i_ds·λ_ds + i'_qr·λ'_qr + i'_dr·λ'_dr) [J]
 };
 
 /// Starts the machine unexcited (all currents 0) from rest at t = 0 on a
