@@ -111,27 +111,48 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
 }
 
 /**
- * The start verdict (a run from rest) over the start window:
- *   completed:  held and ω_e >= stall_fraction·ω_ref
- *   stalled:    held and ω_e <  stall_fraction·ω_ref, and not still gaining
- *               speed over the second half of the run at >= a tenth of its
- *               mean rate since the start (the drive cannot take the load
- *               past this speed; the torques there are given)
- *   unfinished: not held (still accelerating, or oscillating) when the
- *               window ended
+ * The start verdict (a run from rest) over the start window, with the
+ * starting sequences (starters, clutch engagements; Scene::startSequences)
+ * read in the state `end` at the window's end:
+ *   unfinished: a sequence that advances with time had not finished (a
+ *               ramp still running, a switch still to come: the starter is
+ *               still in circuit, whatever the speed did), or not held
+ *               (still accelerating, or oscillating) when the window ended
+ *   stalled:    held, not still gaining speed over the second half of the
+ *               run at >= a tenth of its mean rate since the start, and
+ *               either ω_e < stall_fraction·ω_ref or a sequence waits on
+ *               the shaft (a switch at a speed never reached, a converter
+ *               ramp held at its torque limit): the drive cannot take the
+ *               load past this speed; the torques there are given
+ *   completed:  held, ω_e >= stall_fraction·ω_ref and every sequence finished
  */
 void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body, const HoldCheck& h,
-                AnalysisResult& result) {
+                const SimTK::State& end, AnalysisResult& result) {
     if (!h.valid) return;
     const ElementSpec& sc = spec.scenario;
     const double fraction = sc.number("stall_fraction");
+    // The starting sequences at the window's end: "name: where it stands".
+    std::string running, waiting, finished;
+    for (const StartSequence& q : scene.startSequences()) {
+        const StartSequenceState st = q.state(end);
+        std::string& list = st.finished ? finished : st.waitsOnShaft ? waiting : running;
+        list += (list.empty() ? "" : "; ") + q.name + ": " + st.text;
+    }
+    const std::string endText = " at " + fmt(end.getTime()) + " s";
     const std::string ref = h.hinted ? "the drives' running speed " + fmt(h.wRef) + " rad/s referred to " + body.name
                                      : "its final speed (no drive hints a rated speed)";
     const double wRpm = h.wEnd * 30 / SimTK::Pi;
-    if (h.held && std::abs(h.wEnd) >= fraction * h.wRef) {
+    if (!running.empty()) {
+        result.verdict = "unfinished";
+        result.verdictText = "start unfinished: the starting sequence had not finished" + endText + " (" + running +
+                             "); " + body.name + " was at " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) + " rpm, " +
+                             (h.held ? "held " : "not held ") + h.holdText +
+                             "): no start time or steady values are given; lengthen end_time past the sequence's end";
+    } else if (h.held && waiting.empty() && std::abs(h.wEnd) >= fraction * h.wRef) {
         result.verdict = "completed";
         result.verdictText = "start completed: " + body.name + " held " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
-                             " rpm) " + h.holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref;
+                             " rpm) " + h.holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref +
+                             (finished.empty() ? "" : "; " + finished);
     } else if (h.held && !h.stillRising) {
         result.verdict = "stalled";
         // Drive and load torques at the last sample of the window.
@@ -148,15 +169,18 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
         }
         result.verdictText = "start stalled: " + body.name + " held " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
                              " rpm, " + fmt(100 * h.wEnd / h.wRef) + " % of " + ref + ") " + h.holdText +
-                             ", below the " + fmt(fraction * 100) + " % that counts as started; there the drive "
-                             "torque is " + (drive.empty() ? "none" : drive) + " against the load torque " +
-                             (load.empty() ? "none" : load) +
+                             (waiting.empty() ? ", below the " + fmt(fraction * 100) + " % that counts as started"
+                                              : " while the starting sequence waits on the shaft" + endText + " (" +
+                                                    waiting + ")") +
+                             "; there the drive torque is " + (drive.empty() ? "none" : drive) +
+                             " against the load torque " + (load.empty() ? "none" : load) +
                              " (each on its own shaft): the drive cannot take the load past this speed";
     } else {
         result.verdict = "unfinished";
         result.verdictText = "start unfinished: " + body.name + " was at " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
                              " rpm) at " + fmt(h.tEnd) + " s and not held " + h.holdText + " (it moved by up to " +
-                             fmt(h.worst) + " rad/s): no start time or steady values are given; lengthen end_time";
+                             fmt(h.worst) + " rad/s)" + (waiting.empty() ? "" : "; the starting sequence waits on the shaft (" + waiting + ")") +
+                             ": no start time or steady values are given; lengthen end_time";
     }
     result.results.push_back({"start_completed", result.verdict == "completed" ? 1.0 : 0.0, "1",
                               "1 if the start completed (see verdict), else 0"});
@@ -316,7 +340,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     const std::size_t speedCol = table.column(speedColumnName(*scene, speedBody));
     const HoldCheck holdCheck = checkHold(*scene, spec, speedBody, speedCol, switchTime, result);
     if (start == "rest")
-        judgeStart(*scene, spec, speedBody, holdCheck, result);
+        judgeStart(*scene, spec, speedBody, holdCheck, steady, result);
     else
         judgeRun(spec, speedBody, holdCheck, switched, switchTime, stopTime, last.getTime(),
                  pinSpeed(last, speedBody.mobod), result);

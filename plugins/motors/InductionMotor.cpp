@@ -109,6 +109,11 @@ double InductionMotor::calcCurrent(const SimTK::State& state) const {
     return currentAtSpeed(m_shaft.getOneU(state, SimTK::MobilizerUIndex(0)), supply(state));
 }
 
+StartSequenceState InductionMotor::calcStarterProgress(const SimTK::State& state) const {
+    return m_starter.progress(state.getTime(), getStarterStep(state), isConverter() ? converterFrequency(state) : 1.0,
+                              isRampHeld(state));
+}
+
 int InductionMotor::getStarterStep(const SimTK::State& state) const {
     return SimTK::Value<int>::downcast(m_forces.getDiscreteVariable(state, m_stepIndex));
 }
@@ -365,6 +370,8 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
                               spec.name + " " + starterName + " step " + std::to_string(step),
                               [impl, step](SimTK::State& s) { impl->setStarterStep(s, step); }});
     }
+    if (st.kind != StarterKind::DirectOnLine)
+        scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); }});
     const SimTK::MobilizedBody mobod = shaft->mobod;
     if (!st.switchSpeeds.empty()) {
         // A switch at a speed: the step is a value kept between steps,

@@ -119,6 +119,9 @@ public:
     /// ramp from the present frequency. Returns 1 if it changed, else 0.
     double setRampHold(SimTK::State& state, double held) const;
 
+    /// Where the starter's sequence stands in this state (Starter::progress).
+    StartSequenceState calcStarterProgress(const SimTK::State& state) const;
+
     /// Linear-law coefficients in use: M00 [N*m], b0 [N*m*s/rad].
     double linearStallTorque() const { return m_curve.linearStallTorque(); }
     double linearSlope() const { return m_curve.linearSlope(); }

@@ -1,5 +1,7 @@
 #include "plugins/motors/Starter.h"
 
+#include "plugins/scene/Format.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -76,6 +78,64 @@ SupplyState Starter::supply(double t, int step) const {
         case K::LiquidResistance: s.resistance = ramp(m_params.initialResistanceRatio, t, m_params.rampTime); break;
     }
     return s;
+}
+
+StartSequenceState Starter::progress(double t, int step, double frequency, bool rampHeld) const {
+    using K = StarterParams::Kind;
+    const StarterParams& p = m_params;
+    StartSequenceState q;
+    const double rampDone = p.rampTime > 0 ? std::min(std::max(t, 0.0) / p.rampTime, 1.0) : 1.0;
+    const std::string rampText = formatNumber(100 * rampDone, 3) + " % of its " + formatNumber(p.rampTime) + " s ramp";
+    // The pending switch of a stepped starter, by time or by the shaft's speed.
+    const auto nextSwitch = [&]() -> std::string {
+        const std::size_t i = static_cast<std::size_t>(step);
+        if (switchesBySpeed())
+            return i < p.switchSpeeds.size() ? "waits for the shaft to reach " + formatNumber(p.switchSpeeds[i]) + " rad/s"
+                                             : "";
+        return i < p.switchTimes.size() ? "switches at " + formatNumber(p.switchTimes[i]) + " s" : "";
+    };
+    switch (p.kind) {
+        case K::DirectOnLine: q.text = "direct on line"; break;
+        case K::StarDelta:
+            q.finished = step >= 1;
+            q.waitsOnShaft = !q.finished && switchesBySpeed();
+            q.text = q.finished ? "star-delta starter switched to delta"
+                                : "star-delta starter still in star (torque / 3); it " + nextSwitch();
+            break;
+        case K::SoftStart:
+            q.finished = rampDone >= 1;
+            q.text = q.finished ? "soft start at full voltage since " + formatNumber(p.rampTime) + " s"
+                                : "soft start at V = " + formatNumber(ramp(p.initialVoltage, t, p.rampTime), 4) +
+                                      " of rated, " + rampText;
+            break;
+        case K::FrequencyConverter:
+            q.finished = frequency >= 1;
+            q.waitsOnShaft = !q.finished && rampHeld;
+            q.text = q.finished ? "frequency converter at rated frequency"
+                                : std::string("frequency converter at f = ") + formatNumber(frequency, 4) +
+                                      " of rated, " +
+                                      (rampHeld ? "its ramp held at the torque limit"
+                                                : "ramping (" + formatNumber(rampRate() * 100, 4) + " % of rated per s)");
+            break;
+        case K::RotorResistance: {
+            const int steps = static_cast<int>(p.resistanceRatios.size());
+            q.finished = step >= steps;
+            q.waitsOnShaft = !q.finished && switchesBySpeed();
+            q.text = q.finished ? "rotor-resistance starter: rotor short-circuited"
+                                : "rotor-resistance starter in step " + std::to_string(step + 1) + " of " +
+                                      std::to_string(steps) + " (R/R_rotor = " +
+                                      formatNumber(p.resistanceRatios[static_cast<std::size_t>(std::max(step, 0))], 4) +
+                                      "); it " + nextSwitch();
+            break;
+        }
+        case K::LiquidResistance:
+            q.finished = rampDone >= 1;
+            q.text = q.finished ? "liquid-resistance starter shorted since " + formatNumber(p.rampTime) + " s"
+                                : "liquid-resistance starter at R/R_rotor = " +
+                                      formatNumber(ramp(p.initialResistanceRatio, t, p.rampTime), 4) + ", " + rampText;
+            break;
+    }
+    return q;
 }
 
 double Starter::rampFrequency(double t, double from, double fromTime) const {

@@ -4,6 +4,8 @@
 // rotor resistances). Plain C++ (no Simbody): the InductionMotor element
 // holds one and applies the supply state to its TorqueSpeedCurve.
 
+#include "plugins/scene/StartSequence.h"
+
 #include <limits>
 #include <string>
 #include <vector>
@@ -70,6 +72,12 @@ public:
     double rampFrequency(double time, double fromFrequency, double fromTime) const;
     /// Frequency converter: the ramp's rate R = (1 − f0)/T [1/s].
     double rampRate() const { return (1 - m_params.initialFrequency) / m_params.rampTime; }
+    /// Where the starting sequence stands at `time` [s] in step `step`, with
+    /// the converter's output frequency f/f_rated [-] and whether its ramp is
+    /// held at the torque limit: finished once the supply is full (delta,
+    /// full voltage, full frequency, rotor short-circuited); it waits on the
+    /// shaft while a switch at a speed is pending or the ramp is held.
+    StartSequenceState progress(double time, int step, double frequency, bool rampHeld) const;
     /// Number of switches (steps after the first).
     int switchCount() const;
     bool switchesBySpeed() const { return !m_params.switchSpeeds.empty(); }

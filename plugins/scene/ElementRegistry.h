@@ -19,8 +19,8 @@ namespace milldyn {
 /// plugin built against another value is refused.
 // 2: SourceLocation::includedFrom; 3: Scene::addSketch; 4: Scene's shared
 // reactions, prescribed trajectories, omit(), LaggedValue current/keep,
-// ElementSchema::outputOnly; 5: Probe::label.
-constexpr int kPluginAbiVersion = 5;
+// ElementSchema::outputOnly; 5: Probe::label; 6: Scene::addStartSequence.
+constexpr int kPluginAbiVersion = 6;
 
 /// Builds one element into a scene. Throws SpecError for input the schema
 /// could not catch, std::invalid_argument from element constructors.

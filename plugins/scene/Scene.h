@@ -5,6 +5,7 @@
 // threads; a sweep builds one per worker.
 
 #include "plugins/scene/Sketch.h"
+#include "plugins/scene/StartSequence.h"
 
 #include <Simbody.h>
 
@@ -81,6 +82,12 @@ struct DerivedValue {
     double value = 0;   ///< SI
     std::string unit;   ///< SI unit, "1" for a ratio
     std::string doc;    ///< what it is, with the paper's equation number
+};
+
+/// A starting sequence an element declares (see StartSequenceState).
+struct StartSequence {
+    std::string name;  ///< the element's name
+    std::function<StartSequenceState(const SimTK::State&)> state;  ///< at Stage::Velocity
 };
 
 /// One line of `milldyn info`: what was built and why.
@@ -239,6 +246,11 @@ public:
     void addOrderExcitation(OrderExcitation e) { m_orderExcitations.push_back(std::move(e)); }
     const std::vector<OrderExcitation>& orderExcitations() const { return m_orderExcitations; }
 
+    /// Starting sequences (starters, clutch engagements): a start is judged
+    /// complete only once each has finished (see StartSequenceState).
+    void addStartSequence(StartSequence q) { m_startSequences.push_back(std::move(q)); }
+    const std::vector<StartSequence>& startSequences() const { return m_startSequences; }
+
     /// Values elements derive from their parameters (see DerivedValue).
     void addDerivedValue(DerivedValue v) { m_derived.push_back(std::move(v)); }
     const std::vector<DerivedValue>& derivedValues() const { return m_derived; }
@@ -280,6 +292,7 @@ private:
     std::vector<LaggedValue> m_laggedValues;
     std::vector<PrescribedTrajectory> m_trajectories;
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_excitations;
+    std::vector<StartSequence> m_startSequences;
 };
 
 /// One fixed-point sweep over the scene's lagged values (only the eachStep

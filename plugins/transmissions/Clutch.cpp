@@ -1,6 +1,7 @@
 #include "plugins/transmissions/Clutch.h"
 
 #include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/Format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +40,22 @@ double Clutch::calcTorque(const SimTK::State& s) const {
     return calcFrictionTorque(calcCapacity(s), calcSlipSpeed(s), m_params.regularisationSpeed);
 }
 
+StartSequenceState Clutch::calcEngagement(const SimTK::State& s) const {
+    const double engaged = rampFraction(s.getTime(), m_params.engageTime, m_params.rampTime);
+    const double slip = calcSlipSpeed(s);
+    const double lockSlip = std::max(10 * m_params.regularisationSpeed, 0.01 * std::abs(pinSpeed(s, m_from)));
+    StartSequenceState q;
+    q.finished = engaged >= 1 && std::abs(slip) <= lockSlip;
+    q.waitsOnShaft = engaged >= 1 && !q.finished;
+    const std::string fullAt = formatNumber(m_params.engageTime + m_params.rampTime);
+    q.text = engaged < 1 ? "clutch engaging: capacity " + formatNumber(100 * engaged, 3) + " % of " +
+                               formatNumber(m_params.capacity) + " N*m, full at " + fullAt + " s"
+             : q.finished ? "clutch engaged and locked (slip " + formatNumber(slip, 3) + " rad/s)"
+                          : "clutch fully engaged but slipping at " + formatNumber(slip, 4) + " rad/s (locked: within " +
+                                formatNumber(lockSlip, 3) + " rad/s)";
+    return q;
+}
+
 void Clutch::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                        SimTK::Vector& mobilityForces) const {
     const double T = calcTorque(s);
@@ -70,6 +87,7 @@ void buildClutch(const ElementSpec& spec, Scene& scene) {
                          [impl](const SimTK::State& s) { return impl->calcTorque(s) * impl->calcSlipSpeed(s); },
                          "slip heat of the clutch " + spec.name});
     scene.addSpeedRelation(from->name, to->name, 1.0);
+    scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcEngagement(s); }});
     scene.note("force " + spec.name + " (Clutch)", "couples " + from->name + " to " + to->name + " by friction");
 }
 

@@ -2,6 +2,8 @@
 // Clutch: a friction clutch between two shafts (an air clutch of a mill
 // drive) whose torque capacity is ramped up from an engage time.
 
+#include "plugins/scene/StartSequence.h"
+
 #include <Simbody.h>
 
 namespace milldyn {
@@ -54,6 +56,10 @@ public:
     double calcSlipSpeed(const SimTK::State& state) const;  ///< Δω [rad/s]
     double calcCapacity(const SimTK::State& state) const;   ///< M_c(t) [N*m]
     double calcTorque(const SimTK::State& state) const;     ///< T [N*m]
+    /// The engagement as a starting sequence: finished once the capacity is
+    /// full and the pair is locked, |Δω| <= max(10·ω_reg, 1 % of |ω_from|);
+    /// fully engaged but slipping, it waits on the driven shaft.
+    StartSequenceState calcEngagement(const SimTK::State& state) const;
     const ClutchParams& params() const { return m_params; }
 
     void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,

@@ -1,0 +1,231 @@
+// A start is complete only once every starting sequence has finished
+// (Scene::startSequences; driver/analyses/Transient.cpp judgeStart): one
+// case per starter kind and the clutch. Each "held on the starter" case
+// holds the speed within the ±2 % band above 80 % of running while the
+// starter is still in circuit, so a verdict that reads the speed alone
+// calls it completed; these must say unfinished (a sequence that advances
+// with time) or stalled (a sequence that waits on the shaft).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "driver/Cli.h"
+#include "driver/analyses/Analysis.h"
+
+namespace milldyn {
+namespace {
+
+const std::string kModels = std::string(MILLDYN_SOURCE_DIR) + "/models/";
+
+// The start bench's 15 kW 4-pole Kloss motor (models/start_bench_dol.yaml:
+// Mn = 97.4 N*m at 1470 rpm, breakdown 2.5 Mn, synchronous 157.08 rad/s)
+// on J = 1.5 kg*m^2 with `starter` lines and a load of `load` N*m plus
+// `viscous` N*m*s/rad.
+std::string benchModel(const std::string& name, const std::string& starter, double endTime, double load = 0,
+                       double viscous = 0) {
+    const std::string path = ::testing::TempDir() + "/starter_verdict_" + name + ".yaml";
+    std::ofstream f(path);
+    f << "format_version: 1\nname: starter verdict bench " << name << "\n"
+      << "bodies:\n  - name: shaft\n    inertia: 1.5 kg*m^2\n    joint: {type: pin, parent: ground}\n"
+      << "elements:\n  - type: InductionMotor\n    name: motor\n    body: shaft\n    law: kloss\n"
+      << "    rated_torque: 97.4 N*m\n    rated_speed: 1470 rpm\n    synchronous_speed: 1500 rpm\n"
+      << "    breakdown_ratio: 2.5\n"
+      << starter << "  - type: ResistanceTorque\n    name: load\n    body: shaft\n    constant_torque: " << load
+      << " N*m\n    viscous_coefficient: " << viscous << " N*m*s/rad\n    smoothing_speed: 0.01 rad/s\n"
+      << "scenario:\n  analysis: transient\n  initial_state: rest\n  end_time: " << endTime
+      << " s\n  speed_body: shaft\n"
+      << "integrator:\n  name: RungeKuttaMerson\n  accuracy: 1e-7\noutputs:\n  sample_interval: 5 ms\n";
+    return path;
+}
+
+// The speed alone was held: without the starter's sequence this start
+// would be judged completed.
+void expectHeldOnTheStarter(const AnalysisResult& r) {
+    EXPECT_NE(r.verdictText.find("held within"), std::string::npos) << r.verdictText;
+}
+
+void expectNoStartValues(const AnalysisResult& r) {
+    EXPECT_EQ(r.find("start_time"), nullptr) << r.verdictText;
+    EXPECT_EQ(r.find("steady_speed"), nullptr) << r.verdictText;
+    ASSERT_NE(r.find("speed_at_end"), nullptr);
+    ASSERT_NE(r.find("start_completed"), nullptr);
+    EXPECT_EQ(r.find("start_completed")->value, 0.0);
+}
+
+bool says(const AnalysisResult& r, const std::string& text) {
+    return r.verdictText.find(text) != std::string::npos;
+}
+
+// The measured defect: the 3 m x 4 m mill on its liquid-resistance starter
+// (shorted over 20 s) holds 1.626 rad/s (84 % of running) at 8 s.
+TEST(StarterVerdict, LiquidResistanceCutShortOnItsPlateauIsUnfinished) {
+    const std::string model = kModels + "tumbling_ball_mill_3x4m_start_slip_ring.yaml";
+    const AnalysisResult cut = runModelFile(model, {{"scenario.end_time", "8 s"}});
+    EXPECT_EQ(cut.verdict, "unfinished") << cut.verdictText;
+    EXPECT_TRUE(says(cut, "liquid-resistance starter at R/R_rotor")) << cut.verdictText;
+    EXPECT_TRUE(says(cut, "40 % of its 20 s ramp")) << cut.verdictText;  // 8 s of 20 s
+    expectHeldOnTheStarter(cut);
+    expectNoStartValues(cut);
+}
+
+TEST(StarterVerdict, LiquidResistanceRunPastItsRampCompletesAndSaysSo) {
+    const AnalysisResult r =
+        runModelFile(benchModel("liquid_done", "    starter: liquid_resistance\n    initial_resistance_ratio: 5\n"
+                                               "    ramp_time: 2 s\n",
+                                4),
+                     {});
+    EXPECT_EQ(r.verdict, "completed") << r.verdictText;
+    EXPECT_TRUE(says(r, "liquid-resistance starter shorted since 2 s")) << r.verdictText;
+    EXPECT_NE(r.find("start_time"), nullptr);
+}
+
+// V0 = 0.85: unloaded, the shaft runs within 1 % of synchronous on 0.85 V
+// (slip grows only as 1/V²), long before the 10 s ramp ends.
+TEST(StarterVerdict, SoftStartHeldOnItsRampIsUnfinished) {
+    const AnalysisResult r = runModelFile(
+        benchModel("soft", "    starter: soft_start\n    initial_voltage: 0.85\n    ramp_time: 10 s\n", 3), {});
+    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
+    EXPECT_TRUE(says(r, "soft start at V = 0.895 of rated, 30 % of its 10 s ramp")) << r.verdictText;
+    expectHeldOnTheStarter(r);
+    expectNoStartValues(r);
+}
+
+TEST(StarterVerdict, StarDeltaStillInStarIsUnfinished) {
+    const AnalysisResult r =
+        runModelFile(benchModel("star_time", "    starter: star_delta\n    switch_times: [25 s]\n", 20), {});
+    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
+    EXPECT_TRUE(says(r, "still in star (torque / 3); it switches at 25 s")) << r.verdictText;
+    expectHeldOnTheStarter(r);
+    expectNoStartValues(r);
+}
+
+// In star this Kloss motor gives a third of 46.2 N*m at standstill: it
+// takes about 10 s to run up unloaded.
+// A switch speed above synchronous (157.08 rad/s) is never reached: the
+// starter waits on the shaft and the start stalls in star.
+TEST(StarterVerdict, StarDeltaWaitingForASpeedNeverReachedIsAStall) {
+    const AnalysisResult r =
+        runModelFile(benchModel("star_speed", "    starter: star_delta\n    switch_speeds: [160 rad/s]\n", 20), {});
+    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
+    EXPECT_TRUE(says(r, "waits for the shaft to reach 160 rad/s")) << r.verdictText;
+    expectNoStartValues(r);
+}
+
+TEST(StarterVerdict, StarDeltaSwitchedCompletes) {
+    const AnalysisResult r =
+        runModelFile(benchModel("star_done", "    starter: star_delta\n    switch_speeds: [140 rad/s]\n", 20), {});
+    EXPECT_EQ(r.verdict, "completed") << r.verdictText;
+    EXPECT_TRUE(says(r, "star-delta starter switched to delta")) << r.verdictText;
+}
+
+TEST(StarterVerdict, RotorResistanceStepStillInCircuitIsUnfinished) {
+    const AnalysisResult r = runModelFile(
+        benchModel("steps_time", "    starter: rotor_resistance\n    resistance_ratios: [3]\n    switch_times: [5 s]\n",
+                   3),
+        {});
+    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
+    EXPECT_TRUE(says(r, "rotor-resistance starter in step 1 of 1 (R/R_rotor = 3); it switches at 5 s"))
+        << r.verdictText;
+    expectHeldOnTheStarter(r);
+    expectNoStartValues(r);
+}
+
+TEST(StarterVerdict, RotorResistanceWaitingForASpeedNeverReachedIsAStall) {
+    const AnalysisResult r = runModelFile(
+        benchModel("steps_speed",
+                   "    starter: rotor_resistance\n    resistance_ratios: [3]\n    switch_speeds: [160 rad/s]\n", 3),
+        {});
+    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
+    EXPECT_TRUE(says(r, "waits for the shaft to reach 160 rad/s")) << r.verdictText;
+    expectNoStartValues(r);
+}
+
+// Torque limit 146.1 N*m against 30 N*m + 0.85 N*m*s/rad·ω: the load
+// reaches the limit at ω = (146.1 − 30)/0.85 = 136.6 rad/s, 89 % of the
+// rated 153.9 rad/s, where the converter holds its ramp for good.
+TEST(StarterVerdict, ConverterHeldAtItsTorqueLimitIsAStall) {
+    const AnalysisResult r = runModelFile(benchModel("converter_held",
+                                                     "    starter: frequency_converter\n    initial_frequency: 0.1\n"
+                                                     "    ramp_time: 1 s\n    torque_limit: 146.1 N*m\n",
+                                                     15, 30, 0.85),
+                                          {});
+    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
+    EXPECT_TRUE(says(r, "its ramp held at the torque limit")) << r.verdictText;
+    ASSERT_NE(r.find("speed_at_end"), nullptr);
+    EXPECT_NEAR(r.find("speed_at_end")->value, (146.1 - 30) / 0.85, 0.01 * 136.6);
+    expectNoStartValues(r);
+}
+
+TEST(StarterVerdict, ConverterMidRampIsUnfinishedAndNamesTheConverter) {
+    const AnalysisResult r = runModelFile(kModels + "start_bench_converter.yaml", {{"scenario.end_time", "0.5 s"}});
+    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
+    EXPECT_TRUE(says(r, "frequency converter at f = ")) << r.verdictText;
+    expectNoStartValues(r);
+}
+
+// A clutch between a direct-on-line motor and a drum: the motor shaft is
+// held at speed while the clutch is still engaging.
+std::string clutchModel(const std::string& name, double engageTime, double capacity, double drumLoad, double endTime) {
+    const std::string path = ::testing::TempDir() + "/starter_verdict_" + name + ".yaml";
+    std::ofstream f(path);
+    f << "format_version: 1\nname: clutch verdict bench\n"
+      << "bodies:\n  - name: motor_shaft\n    inertia: 1.5 kg*m^2\n    joint: {type: pin, parent: ground}\n"
+      << "  - name: drum\n    inertia: 1.5 kg*m^2\n    joint: {type: pin, parent: ground}\n"
+      << "elements:\n  - type: InductionMotor\n    name: motor\n    body: motor_shaft\n    law: kloss\n"
+      << "    rated_torque: 97.4 N*m\n    rated_speed: 1470 rpm\n    synchronous_speed: 1500 rpm\n"
+      << "    breakdown_ratio: 2.5\n"
+      << "  - type: Clutch\n    name: clutch\n    bodies: [motor_shaft, drum]\n    capacity: " << capacity
+      << " N*m\n    engage_time: " << engageTime << " s\n    ramp_time: 0.5 s\n"
+      << "  - type: ResistanceTorque\n    name: load\n    body: drum\n    constant_torque: " << drumLoad
+      << " N*m\n    smoothing_speed: 0.01 rad/s\n"
+      << "scenario:\n  analysis: transient\n  initial_state: rest\n  end_time: " << endTime
+      << " s\n  speed_body: motor_shaft\n"
+      << "integrator:\n  name: CPodes\n  accuracy: 1e-7\noutputs:\n  sample_interval: 5 ms\n";
+    return path;
+}
+
+TEST(StarterVerdict, ClutchStillEngagingIsUnfinished) {
+    const AnalysisResult r = runModelFile(clutchModel("clutch_engaging", 5, 150, 0, 3), {});
+    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
+    EXPECT_TRUE(says(r, "clutch: clutch engaging: capacity 0 % of 150 N*m, full at 5.5 s")) << r.verdictText;
+    expectHeldOnTheStarter(r);
+    expectNoStartValues(r);
+}
+
+// The motor runs up alone (about 2.5 s), then a 60 N*m clutch engages from
+// 3.5 s against a drum load of 80 N*m: it slips for good while the motor
+// runs on at 60 N*m; the start stalls on the clutch. (10 s: the second
+// half of the run, over which a stall must not gain speed, starts after
+// the run-up.)
+TEST(StarterVerdict, ClutchEngagedButSlippingIsAStall) {
+    const AnalysisResult r = runModelFile(clutchModel("clutch_slipping", 3.5, 60, 80, 10), {});
+    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
+    EXPECT_TRUE(says(r, "clutch fully engaged but slipping")) << r.verdictText;
+    expectNoStartValues(r);
+}
+
+TEST(StarterVerdict, ClutchEngagedAndLockedCompletes) {
+    // 150 N*m against 20 N*m on 1.5 kg*m^2: the drum locks about 1.8 s after 2.5 s.
+    const AnalysisResult r = runModelFile(clutchModel("clutch_locked", 2.5, 150, 20, 6), {});
+    EXPECT_EQ(r.verdict, "completed") << r.verdictText;
+    EXPECT_TRUE(says(r, "clutch engaged and locked")) << r.verdictText;
+}
+
+TEST(StarterVerdict, CliPrintsTheUnfinishedStarterAndNoStartTime) {
+    const std::string dir = ::testing::TempDir() + "/starter_verdict_cli";
+    std::ostringstream out, err;
+    const int code = runCli({"run", kModels + "tumbling_ball_mill_3x4m_start_slip_ring.yaml", "--end-time", "8",
+                             "--out", dir},
+                            out, err);
+    EXPECT_EQ(code, 0) << err.str();
+    EXPECT_NE(out.str().find("verdict: start unfinished: the starting sequence had not finished at 8 s"),
+              std::string::npos)
+        << out.str();
+    EXPECT_EQ(out.str().find("start_time"), std::string::npos) << out.str();
+}
+
+}  // namespace
+}  // namespace milldyn
