@@ -77,6 +77,10 @@ double DqInductionMotor::calcLineCurrent(const SimTK::State& s) const {
     return delta ? std::sqrt(3.0) * phase : phase;
 }
 
+StartSequenceState DqInductionMotor::calcStarterProgress(const SimTK::State& s) const {
+    return m_starter.progress(s.getTime(), getStarterStep(s), 1.0, false);
+}
+
 int DqInductionMotor::getStarterStep(const SimTK::State& s) const {
     return SimTK::Value<int>::downcast(m_forces.getDiscreteVariable(s, m_stepIndex));
 }
@@ -183,6 +187,9 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
                               spec.name + " " + starterName + " step " + std::to_string(step),
                               [impl, step](SimTK::State& s) { impl->setStarterStep(s, step); }});
     }
+    // A start cut short while the starter is still in circuit is unfinished.
+    if (st.kind != StarterKind::DirectOnLine)
+        scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); }});
     scene.addSpeedHint(shaft->name, 2 * M_PI * p.frequency / p.polePairs);
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::DriveTorque, SimTK::Stage::Dynamics,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});

@@ -92,6 +92,9 @@ public:
     /// Line current [A rms]: the phase current, times √3 in delta after a
     /// star–delta switch.
     double calcLineCurrent(const SimTK::State& state) const;
+    /// Where the starter's sequence stands in this state (Starter::progress):
+    /// star until the switch, the soft start's ramp until it ends.
+    StartSequenceState calcStarterProgress(const SimTK::State& state) const;
     int getStarterStep(const SimTK::State& state) const;
     void setStarterStep(SimTK::State& state, int step) const;
     double calcTorque(const SimTK::State& state) const;           ///< [N*m]

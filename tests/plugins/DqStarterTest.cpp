@@ -110,3 +110,32 @@ TEST(DqStarter, BadStarterInputGivesOneLocatedLine) {
 
 }  // namespace
 }  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+// A start cut short while the dq machine's starter is still in circuit:
+// the unloaded shaft runs at (almost) synchronous speed in star, or on the
+// soft start's ramp, so the speed alone would call the start completed.
+TEST(DqStarter, StartCutShortOnTheStarterIsUnfinished) {
+    const std::string models = std::string(MILLDYN_SOURCE_DIR) + "/models/";
+    const AnalysisResult star = runModelFile(models + "start_bench_dq_star_delta.yaml",
+                                             {{"elements.motor.switch_times", "[8 s]"}, {"scenario.end_time", "6 s"}});
+    EXPECT_EQ(star.verdict, "unfinished") << star.verdictText;
+    EXPECT_NE(star.verdictText.find("held within"), std::string::npos) << star.verdictText;
+    EXPECT_NE(star.verdictText.find("still in star"), std::string::npos) << star.verdictText;
+    EXPECT_EQ(star.find("start_time"), nullptr);
+    const AnalysisResult soft = runModelFile(models + "start_bench_dq_soft_start.yaml",
+                                             {{"elements.motor.ramp_time", "10 s"}, {"scenario.end_time", "6 s"}});
+    EXPECT_EQ(soft.verdict, "unfinished") << soft.verdictText;
+    EXPECT_NE(soft.verdictText.find("held within"), std::string::npos) << soft.verdictText;
+    EXPECT_NE(soft.verdictText.find("soft start at V = "), std::string::npos) << soft.verdictText;
+    // As shipped both finish their sequence and complete.
+    for (const char* bench : {"start_bench_dq_star_delta.yaml", "start_bench_dq_soft_start.yaml"}) {
+        const AnalysisResult r = runModelFile(models + bench, {});
+        EXPECT_EQ(r.verdict, "completed") << bench << ": " << r.verdictText;
+    }
+}
+
+}  // namespace
+}  // namespace milldyn
