@@ -43,12 +43,6 @@ std::string seconds(double t) {
 
 std::string model(const std::string& name) { return modelsDirectory() + "/start_bench_" + name + ".yaml"; }
 
-double resultValue(const AnalysisResult& r, const std::string& name) {
-    const ResultScalar* s = r.find(name);
-    if (!s) throw std::runtime_error("no result " + name);
-    return s->value;
-}
-
 /// The bench's machine restated for the oracle.
 oc::DqMachine machineOf(const ModelSpec& spec) {
     const ElementSpec& m = *spec.findElement("motor");
@@ -89,7 +83,9 @@ ValidationRow worstRow(const std::string& caseName, const std::string& quantity,
 }
 
 void balanceRow(const std::string& name, const AnalysisResult& r, std::vector<ValidationRow>& rows) {
-    const double rel = std::abs(resultValue(r, "energy_balance_relative"));
+    const ResultScalar* balance = r.find("energy_balance_relative");
+    if (!balance) throw std::runtime_error(name + ": the run gives no energy balance");
+    const double rel = std::abs(balance->value);
     rows.push_back(worstRow("start_energy_balance_" + name, "energy balance residual / energy", "1", rel, 0.0, rel, 1e-6,
                             "terminal input = copper heat + kinetic energy + the field's energy"));
 }
