@@ -56,9 +56,11 @@ struct DqInductionMotorParams {
  * the voltage jumps), closed-transition and without the 30° phase shift of
  * the delta's line-to-line voltage against star's phase voltage. The
  * element's `current` is the winding's (phase) current; with star–delta the
- * `line_current` is that current in star and √3 times it in delta (Krause
- * ch. 6 in the winding's own quantities; Modelica MSL's IMC_YD example
- * switches its terminal box the same way). Validated against the oracle
+ * `line_current` is that current in star and √3 times it in delta (the
+ * machine in its winding's own quantities, as Modelica MSL's IMC_YD example
+ * feeds the same machine 57.7 V per winding in star and 100 V in delta;
+ * its three-phase SwitchYD also carries the 30° step, not modelled here).
+ * Validated against the oracle
  * validation/oracles/DqMachineOracle (a different formulation: currents in
  * a synchronously rotating frame, fixed-step RK4) over whole starts, and
  * held at a slip against the equivalent circuit times u² (start_dq_*).
