@@ -97,7 +97,8 @@ constexpr double kOracleStep = 1e-5;
 
 // The benches integrate at RungeKuttaMerson 1e-6, the cheapest point of
 // their accuracy front within 1e-3 (docs/speed-accuracy-fronts.md: worst
-// error 2.6e-4 on peaks, ripple, speed and times). Against an oracle
+// error on peaks, ripple, speed and times 2.6e-4 direct on line, 1.4e-4
+// star–delta and soft start). Against an oracle
 // integrated to ~1e-10 the difference is therefore milldyn's integration
 // error; 1e-3 of each quantity's scale is the front's own bound. A
 // formulation error (a wrong factor, a sign, a torque off by a percent)
