@@ -6,6 +6,8 @@
 # tolerance, in one run; errors against a tight Odeint reference and speed
 # ratios against Odeint dopri5, the best SciPy method and bare Simbody.
 #   bench/run.sh [TOL] [REPEATS]
+# MILLDYN_BENCH_SCENES (default "burr roll kinetostatic") picks the parts run,
+# e.g. MILLDYN_BENCH_SCENES=roll for the roll crusher alone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tol="${1:-1e-6}"
@@ -43,7 +45,10 @@ engine_runs() {  # engine_runs PROGRAM ARGS...: every engine, lines tagged
     "$d/$p" "$@" | sed "s/^{/{\"engine\": \"$tag\", /"
   done
 }
+scenes=" ${MILLDYN_BENCH_SCENES:-burr roll kinetostatic} "
+runs() { [[ "$scenes" == *" $1 "* ]]; }
 echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(getconf _NPROCESSORS_ONLN) cores, engines: $engines"  # getconf: nproc obeys OMP_NUM_THREADS
+if runs burr; then
 out=$(mktemp)
 "$first"/bench_odeint burr 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
 "$first"/bench_odeint burr "$tol" "$repeats" >> "$out"
@@ -51,7 +56,9 @@ out=$(mktemp)
 engine_runs bench_bare_simbody burr "$tol" "$repeats" >> "$out"
 engine_runs bench_milldyn burr "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/report.py "$out"
+fi
 # The roll crusher 2-mass level, rows in phase (bench/roll_equations.h).
+if runs roll; then
 out=$(mktemp)
 "$first"/bench_odeint roll 1e-12 1 dopri5 | sed 's/odeint_dopri5/reference/' > "$out"
 "$first"/bench_odeint roll "$tol" "$repeats" >> "$out"
@@ -59,9 +66,12 @@ out=$(mktemp)
 engine_runs bench_bare_simbody roll "$tol" "$repeats" >> "$out"
 engine_runs bench_milldyn roll "$tol" "$repeats" >> "$out"
 /usr/bin/python3 bench/report.py "$out" "motor speed (2.5, 5, 10 s)"
+fi
 # Kinetostatic throughput (bench/kinetostatic.cpp): configurations/s per
 # core of the planetary-gear `turn` scenario and of its floor.
+if runs kinetostatic; then
 out=$(mktemp)
 engine_runs bench_kinetostatic 2000 3 > "$out"
 /usr/bin/python3 bench/report.py "$out"
+fi
 echo "# done $(date -u '+%H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg)"

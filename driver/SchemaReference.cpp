@@ -1,16 +1,12 @@
 #include "driver/SchemaReference.h"
+#include "plugins/scene/Format.h"
 
 #include <sstream>
 
 namespace milldyn {
 namespace {
 
-std::string number(double v) {
-    std::ostringstream s;
-    s.precision(10);
-    s << v;
-    return s.str();
-}
+std::string number(double v) { return formatNumber(v, 10); }
 
 std::string kindName(const ParamSchema& p) {
     switch (p.kind) {

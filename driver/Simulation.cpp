@@ -1,4 +1,5 @@
 #include "driver/Simulation.h"
+#include "plugins/scene/Format.h"
 
 #include "plugins/scene/EnergyMeter.h"
 
@@ -94,12 +95,7 @@ std::string cpodesError() {
     return body == std::string::npos ? "" : simbodyMessage(text.substr(body + 1));
 }
 
-std::string number(double v) {
-    std::ostringstream s;
-    s.precision(4);
-    s << v;
-    return s.str();
-}
+std::string number(double v) { return formatNumber(v, 4); }
 
 /// Which element made a failed integration impossible, from the last
 /// accepted state: a force element whose generalized force is not finite,
@@ -912,6 +908,11 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
     // Steady running is about the mean load: periodic excitations off while
     // solving, back on in the state returned.
     scene.setExcitationsOn(state, false);
+    // Steady running is the machine after its start: starters at their end
+    // (delta, full voltage, rated frequency, rotor short-circuited), clutches
+    // engaged — in the state returned too.
+    for (const StartSequence& q : scene.startSequences())
+        if (q.finish) q.finish(state);
     const int nq = state.getNQ(), nu = state.getNU();
     const auto hints = scene.speedHints();
     for (const auto& b : scene.bodies()) b.mobod.setOneU(state, SimTK::MobilizerUIndex(0), hints.at(b.name));

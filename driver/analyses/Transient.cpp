@@ -2,6 +2,7 @@
 // drives off when scheduled, and summarise steady running and run-out.
 
 #include "driver/SceneBuilder.h"
+#include "plugins/scene/Format.h"
 #include "driver/analyses/Analysis.h"
 
 #include <algorithm>
@@ -28,11 +29,7 @@ std::string probeNames(const Scene& scene, ProbeRole role) {
     return out.empty() ? "none" : out;
 }
 
-std::string fmt(double v) {
-    std::ostringstream o;
-    o << std::setprecision(4) << v;
-    return o.str();
-}
+std::string fmt(double v) { return formatNumber(v, 4); }
 
 /// Whether speed_body held its speed over the last hold window before the
 /// first switch-off (or the end), with the numbers the verdicts quote.

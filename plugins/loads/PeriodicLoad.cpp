@@ -3,6 +3,7 @@
 #include "plugins/scene/ElementRegistry.h"
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -27,6 +28,14 @@ PeriodicLoad::PeriodicLoad(const SimTK::GeneralForceSubsystem& forces, std::vect
     check(p.phases.empty() || static_cast<int>(p.phases.size()) == p.rows, "phases",
           static_cast<double>(p.phases.size()), "give one phase per row");
     for (double phi : p.phases) check(std::isfinite(phi), "phases", phi, "each must be finite");
+    // Rows of equal phase share one Fourier sum per realization.
+    std::map<double, int> groupOfPhase;
+    for (int r = 0; r < p.rows; ++r) {
+        const double phi = rowPhase(r);
+        const auto found = groupOfPhase.emplace(phi, static_cast<int>(m_phases.size()));
+        if (found.second) m_phases.push_back(phi);
+        m_phaseOfRow.push_back(found.first->second);
+    }
 }
 
 double PeriodicLoad::rowPhase(int row) const {
@@ -34,12 +43,26 @@ double PeriodicLoad::rowPhase(int row) const {
     return m_params.staggered ? 2 * SimTK::Pi * row / m_params.rows : 0.0;
 }
 
-double PeriodicLoad::periodicPart(int row, double t) const {
-    const double theta = m_params.fundamentalFrequency * t + rowPhase(row);
-    double sum = 0;
-    for (std::size_t k = 0; k < m_params.amplitudes.size(); ++k)
-        sum += m_params.amplitudes[k] * std::sin((k + 1) * theta);
+double PeriodicLoad::calcSineSeries(double theta) const {
+    const std::vector<double>& b = m_params.amplitudes;
+    if (b.empty()) return 0;
+    const double s1 = std::sin(theta);
+    double sum = b[0] * s1;
+    if (b.size() == 1) return sum;
+    // Angle addition: (sin, cos) of (k+1)θ from those of kθ and θ.
+    const double c1 = std::cos(theta);
+    double sk = s1, ck = c1;
+    for (std::size_t k = 1; k < b.size(); ++k) {
+        const double next = sk * c1 + ck * s1;
+        ck = ck * c1 - sk * s1;
+        sk = next;
+        sum += b[k] * sk;
+    }
     return sum;
+}
+
+double PeriodicLoad::periodicPart(int row, double t) const {
+    return calcSineSeries(m_params.fundamentalFrequency * t + rowPhase(row));
 }
 
 int PeriodicLoad::bodyOfRow(int row) const { return m_bodies.size() == 1 ? 0 : row; }
@@ -52,35 +75,63 @@ void PeriodicLoad::setExcitationOn(SimTK::State& s, bool on) const {
     SimTK::Value<bool>::updDowncast(m_forces.updDiscreteVariable(s, m_excitationIndex)) = on;
 }
 
-double PeriodicLoad::rowTorque(const SimTK::State& s, int row) const {
-    const double omega = m_bodies[bodyOfRow(row)].getOneU(s, SimTK::MobilizerUIndex(0));
-    double M = m_params.meanTorque * std::tanh(omega / m_params.smoothingSpeed);
-    if (isExcitationOn(s)) M += periodicPart(row, s.getTime());
-    return M;
+void PeriodicLoad::calcValues(const SimTK::State& s, Values& out) const {
+    const std::size_t bodies = m_bodies.size();
+    // Scratch kept in the cache value: sized once, reused every realization.
+    out.bodySpeeds.resize(bodies);
+    out.bodyMeans.resize(bodies);
+    out.bodyTorques.assign(bodies, 0.0);
+    for (std::size_t j = 0; j < bodies; ++j) {
+        out.bodySpeeds[j] = m_bodies[j].getOneU(s, SimTK::MobilizerUIndex(0));
+        out.bodyMeans[j] = m_params.meanTorque * std::tanh(out.bodySpeeds[j] / m_params.smoothingSpeed);
+    }
+    const bool excited = isExcitationOn(s);
+    out.phaseParts.assign(m_phases.size(), 0.0);
+    if (excited)
+        for (std::size_t g = 0; g < m_phases.size(); ++g)
+            out.phaseParts[g] = calcSineSeries(m_params.fundamentalFrequency * s.getTime() + m_phases[g]);
+    out.rowTorques.resize(m_params.rows);
+    out.totalTorque = 0;
+    out.absorbedPower = 0;
+    for (int r = 0; r < m_params.rows; ++r) {
+        const int j = bodyOfRow(r);
+        double M = out.bodyMeans[j];
+        if (excited) M += out.phaseParts[m_phaseOfRow[r]];
+        out.rowTorques[r] = M;
+        out.bodyTorques[j] += M;
+        out.totalTorque += M;
+        out.absorbedPower += M * out.bodySpeeds[j];
+    }
 }
 
-double PeriodicLoad::calcTotalTorque(const SimTK::State& s) const {
-    double sum = 0;
-    for (int r = 0; r < m_params.rows; ++r) sum += rowTorque(s, r);
-    return sum;
-}
-
-double PeriodicLoad::calcAbsorbedPower(const SimTK::State& s) const {
-    double sum = 0;
-    for (int r = 0; r < m_params.rows; ++r)
-        sum += rowTorque(s, r) * m_bodies[bodyOfRow(r)].getOneU(s, SimTK::MobilizerUIndex(0));
-    return sum;
+const PeriodicLoad::Values& PeriodicLoad::getValues(const SimTK::State& s) const {
+    SimTK_STAGECHECK_GE_ALWAYS(m_forces.getStage(s), SimTK::Stage::Velocity, "PeriodicLoad::getValues()");
+    auto& values = SimTK::Value<Values>::updDowncast(m_forces.updCacheEntry(s, m_valuesIndex));
+    if (!m_forces.isCacheValueRealized(s, m_valuesIndex)) {
+        calcValues(s, values);
+        m_forces.markCacheValueRealized(s, m_valuesIndex);
+    }
+    return values;
 }
 
 void PeriodicLoad::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                              SimTK::Vector& mobilityForces) const {
-    for (int r = 0; r < m_params.rows; ++r)
-        m_bodies[bodyOfRow(r)].applyOneMobilityForce(s, SimTK::MobilizerUIndex(0), -rowTorque(s, r), mobilityForces);
+    const Values& v = getValues(s);
+    for (std::size_t j = 0; j < m_bodies.size(); ++j)
+        m_bodies[j].applyOneMobilityForce(s, SimTK::MobilizerUIndex(0), -v.bodyTorques[j], mobilityForces);
 }
 
 void PeriodicLoad::realizeTopology(SimTK::State& s) const {
     m_excitationIndex =
         m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<bool>(true));
+    // Valid from Velocity (time and speeds) until time, a speed or the
+    // excitation switch changes; the switch invalidates Dynamics only, so it
+    // is a prerequisite of its own.
+    const SimTK::SubsystemIndex subsystem = m_forces.getMySubsystemIndex();
+    SimTK::Array_<SimTK::DiscreteVarKey> switches;
+    switches.push_back(SimTK::DiscreteVarKey(subsystem, m_excitationIndex));
+    m_valuesIndex = s.allocateCacheEntryWithPrerequisites(subsystem, SimTK::Stage::Velocity, SimTK::Stage::Infinity,
+                                                          false, false, false, switches, {}, new SimTK::Value<Values>());
 }
 
 namespace {
@@ -101,11 +152,11 @@ void buildPeriodicLoad(const ElementSpec& spec, Scene& scene) {
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     scene.addExcitation(spec.name, [impl](SimTK::State& s, bool on) { impl->setExcitationOn(s, on); });
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, SimTK::Stage::Velocity,
-                    [impl](const SimTK::State& s) { return impl->calcTotalTorque(s); }});
+                    [impl](const SimTK::State& s) { return impl->getTotalTorque(s); }});
     scene.addProbe({spec.name + ".power", "W", ProbeRole::ResistancePower, SimTK::Stage::Velocity,
-                    [impl](const SimTK::State& s) { return impl->calcAbsorbedPower(s); }});
+                    [impl](const SimTK::State& s) { return impl->getAbsorbedPower(s); }});
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load,
-                         [impl](const SimTK::State& s) { return impl->calcAbsorbedPower(s); }});
+                         [impl](const SimTK::State& s) { return impl->getAbsorbedPower(s); }});
     scene.note("force " + spec.name + " (PeriodicLoad, " + std::to_string(p.rows) + " rows, " +
                    (p.phases.empty() ? spec.text("arrangement") : std::string("phases as listed")) + ")",
                "loads " + std::to_string(bodies.size()) + " bod" + (bodies.size() == 1 ? "y" : "ies"));

@@ -49,6 +49,21 @@ struct PeriodicLoadParams {
  * (setExcitationOn(false)) only the mean acts: the operating point of the
  * steady-state solver and the linearization. Checked by PeriodicLoadTest
  * and, through the crusher model, by validation/oracles/RollCrusherOracle.
+ *
+ * Evaluated once per realization: the row torques, their sums per body, the
+ * total and the absorbed power are kept in a lazy cache entry (Velocity
+ * stage: time and speeds; the excitation switch is a prerequisite), which
+ * calcForce, the probes and the energy meter's power flow all read
+ * (getValues). Rows of equal phase share one Fourier sum and rows on one
+ * body one tanh. The harmonics come from one sine and cosine per distinct
+ * phase by the angle-addition recurrence
+ *
+ * <pre>
+ *   sin((k+1)θ) = sin kθ·cos θ + cos kθ·sin θ,   cos((k+1)θ) = cos kθ·cos θ − sin kθ·sin θ
+ * </pre>
+ *
+ * whose rounding grows like k·ε (PeriodicLoadTest checks it against the
+ * direct sum in long double: ≤ 1e-13 of Σ|b_k| up to 50 harmonics).
  */
 class PeriodicLoad : public SimTK::Force::Custom::Implementation {
 public:
@@ -61,10 +76,29 @@ public:
     double rowPhase(int row) const;
     /// Periodic part of row r's torque at time t [N*m].
     double periodicPart(int row, double t) const;
+
+    /// What one realization of the rows gives (the cache entry's value).
+    struct Values {
+        /// Torque of each row M_r [N*m] (opposing rotation when positive).
+        std::vector<double> rowTorques;
+        /// Σ M_r of the rows on each body [N*m], one entry per body given.
+        std::vector<double> bodyTorques;
+        /// Σ_r M_r [N*m].
+        double totalTorque = 0;
+        /// Σ_r M_r·ω_r [W].
+        double absorbedPower = 0;
+        /// Speed ω_j of each body [rad/s] and its smoothed mean M̄·tanh(ω_j/ωs) [N*m].
+        std::vector<double> bodySpeeds, bodyMeans;
+        /// Σ_k b_k·sin(k(P_1·t + φ_g)) of each distinct phase [N*m] (0 with excitation off).
+        std::vector<double> phaseParts;
+    };
+    /// The row torques of this state, evaluated at most once per
+    /// realization; needs Stage::Velocity.
+    const Values& getValues(const SimTK::State& state) const;
     /// Total torque magnitude this element applies in this state [N*m].
-    double calcTotalTorque(const SimTK::State& state) const;
+    double getTotalTorque(const SimTK::State& state) const { return getValues(state).totalTorque; }
     /// Power the rows absorb, Σ M_r·ω [W].
-    double calcAbsorbedPower(const SimTK::State& state) const;
+    double getAbsorbedPower(const SimTK::State& state) const { return getValues(state).absorbedPower; }
     bool isExcitationOn(const SimTK::State& state) const;
     void setExcitationOn(SimTK::State& state, bool on) const;
     /// The body each row acts on (index into the bodies given).
@@ -78,12 +112,18 @@ public:
     void realizeTopology(SimTK::State& state) const override;
 
 private:
-    double rowTorque(const SimTK::State& state, int row) const;
+    /// Σ_k b_k·sin(k·θ) by the angle-addition recurrence [N*m].
+    double calcSineSeries(double theta) const;
+    void calcValues(const SimTK::State& state, Values& out) const;
 
     const SimTK::GeneralForceSubsystem& m_forces;
     std::vector<SimTK::MobilizedBody> m_bodies;
     PeriodicLoadParams m_params;
+    /// The distinct row phases φ [rad], and each row's index into them.
+    std::vector<double> m_phases;
+    std::vector<int> m_phaseOfRow;
     mutable SimTK::DiscreteVariableIndex m_excitationIndex;
+    mutable SimTK::CacheEntryIndex m_valuesIndex;
 };
 
 }  // namespace milldyn

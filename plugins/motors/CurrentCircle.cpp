@@ -1,4 +1,5 @@
 #include "plugins/motors/CurrentCircle.h"
+#include "plugins/scene/Format.h"
 
 #include <cmath>
 #include <complex>
@@ -9,11 +10,7 @@
 namespace milldyn {
 namespace {
 
-std::string number(double v) {
-    std::ostringstream o;
-    o << v;
-    return o.str();
-}
+std::string number(double v) { return formatNumber(v); }
 
 /// Per-unit current at slip s on a circle (diameter d, magnetising m, slip scale sc).
 std::complex<double> circleCurrent(double s, double d, double m, double sc) {

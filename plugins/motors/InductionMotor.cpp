@@ -1,4 +1,5 @@
 #include "plugins/motors/InductionMotor.h"
+#include "plugins/scene/Format.h"
 
 #include "plugins/scene/ElementRegistry.h"
 
@@ -60,7 +61,8 @@ double InductionMotor::currentAtSpeed(double omega, const SupplyState& u) const 
 }
 
 SupplyState InductionMotor::supply(const SimTK::State& state) const {
-    SupplyState u = m_starter.supply(state.getTime(), getStarterStep(state));
+    SupplyState u = isStarterFinished(state) ? m_starter.finalSupply()
+                                             : m_starter.supply(state.getTime(), getStarterStep(state));
     if (isConverter()) u.frequency = converterFrequency(state);
     return u;
 }
@@ -110,8 +112,25 @@ double InductionMotor::calcCurrent(const SimTK::State& state) const {
 }
 
 StartSequenceState InductionMotor::calcStarterProgress(const SimTK::State& state) const {
+    if (isStarterFinished(state)) {
+        StartSequenceState q;
+        q.text = Starter::kindName(m_params.starter.kind) + " starter ended (the run started from steady running)";
+        if (!isConverter() || converterFrequency(state) >= 1) return q;
+    }
     return m_starter.progress(state.getTime(), getStarterStep(state), isConverter() ? converterFrequency(state) : 1.0,
                               isRampHeld(state));
+}
+
+void InductionMotor::finishStarter(SimTK::State& state) const {
+    SimTK::Value<bool>::updDowncast(m_forces.updDiscreteVariable(state, m_finishedIndex)) = true;
+    setStarterStep(state, m_starter.switchCount());
+    // The converter's ramp at rated frequency (still held to its torque limit).
+    SimTK::Value<SimTK::Vec3>::updDowncast(m_forces.updDiscreteVariable(state, m_rampIndex)) =
+        SimTK::Vec3(0, 1, state.getTime());
+}
+
+bool InductionMotor::isStarterFinished(const SimTK::State& state) const {
+    return SimTK::Value<bool>::downcast(m_forces.getDiscreteVariable(state, m_finishedIndex));
 }
 
 int InductionMotor::getStarterStep(const SimTK::State& state) const {
@@ -148,6 +167,7 @@ void InductionMotor::realizeTopology(SimTK::State& state) const {
     m_stepIndex = m_forces.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<int>(0));
     m_rampIndex = m_forces.allocateDiscreteVariable(
         state, SimTK::Stage::Dynamics, new SimTK::Value<SimTK::Vec3>(SimTK::Vec3(0, m_params.starter.initialFrequency, 0)));
+    m_finishedIndex = m_forces.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<bool>(false));
 }
 
 namespace {
@@ -206,11 +226,7 @@ void rejectKeysOfOthers(const ElementSpec& e, const std::string& chosenKey,
     }
 }
 
-std::string num(double v) {
-    std::ostringstream o;
-    o << v;
-    return o.str();
-}
+std::string num(double v) { return formatNumber(v); }
 
 void checkIncreasing(const ElementSpec& e, const std::string& key, const std::string& what) {
     const std::vector<double>& v = e.numbers(key);
@@ -371,7 +387,8 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
                               [impl, step](SimTK::State& s) { impl->setStarterStep(s, step); }});
     }
     if (st.kind != StarterKind::DirectOnLine)
-        scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); }});
+        scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); },
+                                [impl](SimTK::State& s) { impl->finishStarter(s); }});
     const SimTK::MobilizedBody mobod = shaft->mobod;
     if (!st.switchSpeeds.empty()) {
         // A switch at a speed: the step is a value kept between steps,

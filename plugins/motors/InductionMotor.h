@@ -121,6 +121,10 @@ public:
 
     /// Where the starter's sequence stands in this state (Starter::progress).
     StartSequenceState calcStarterProgress(const SimTK::State& state) const;
+    /// Ends the starter's sequence in `state` for good (steady running): the
+    /// supply is Starter::finalSupply from then on, whatever the time.
+    void finishStarter(SimTK::State& state) const;
+    bool isStarterFinished(const SimTK::State& state) const;
 
     /// Linear-law coefficients in use: M00 [N*m], b0 [N*m*s/rad].
     double linearStallTorque() const { return m_curve.linearStallTorque(); }
@@ -148,6 +152,7 @@ private:
     mutable SimTK::DiscreteVariableIndex m_onIndex;
     mutable SimTK::DiscreteVariableIndex m_stepIndex;
     mutable SimTK::DiscreteVariableIndex m_rampIndex;  // Vec3(held, f_r, t_r)
+    mutable SimTK::DiscreteVariableIndex m_finishedIndex;  // bool: the starter's sequence ended (finishStarter)
 };
 
 }  // namespace milldyn

@@ -66,6 +66,9 @@ public:
     /// Throws std::invalid_argument naming the parameter.
     explicit Starter(const StarterParams& params);
     SupplyState supply(double time, int step) const;
+    /// The supply once the sequence has ended: delta, full voltage, rated
+    /// frequency (with the converter's torque limit), rotor short-circuited.
+    SupplyState finalSupply() const { return supply(std::numeric_limits<double>::max(), switchCount()); }
     /// Frequency converter: the ramp generator's output [-] at `time` [s]
     /// when it (re)started from `fromFrequency` at `fromTime`:
     /// min(1, f_r + R·(t − t_r)), R = rampRate().

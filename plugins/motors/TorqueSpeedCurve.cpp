@@ -1,4 +1,5 @@
 #include "plugins/motors/TorqueSpeedCurve.h"
+#include "plugins/scene/Format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -59,11 +60,7 @@ double MonotoneCubic::operator()(double x) const {
 
 namespace {
 
-std::string number(double v) {
-    std::ostringstream o;
-    o << v;
-    return o.str();
-}
+std::string number(double v) { return formatNumber(v); }
 
 }  // namespace
 

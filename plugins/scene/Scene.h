@@ -88,6 +88,10 @@ struct DerivedValue {
 struct StartSequence {
     std::string name;  ///< the element's name
     std::function<StartSequenceState(const SimTK::State&)> state;  ///< at Stage::Velocity
+    /// Puts the sequence at its end in `state` (full supply, clutch
+    /// engaged), for good: steady running (solveSteadyState) is the machine
+    /// after its start, not in its starter's first step.
+    std::function<void(SimTK::State&)> finish;
 };
 
 /// One line of `milldyn info`: what was built and why.

@@ -18,8 +18,9 @@ double rampFraction(double time, double start, double rampTime) {
     return std::min(std::max((time - start) / rampTime, 0.0), 1.0);
 }
 
-Clutch::Clutch(const SimTK::MobilizedBody& from, const SimTK::MobilizedBody& to, const ClutchParams& p)
-    : m_from(from), m_to(to), m_params(p) {
+Clutch::Clutch(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& from,
+               const SimTK::MobilizedBody& to, const ClutchParams& p)
+    : m_forces(forces), m_from(from), m_to(to), m_params(p) {
     auto bad = [](const std::string& name, double v, const std::string& rule) {
         throw std::invalid_argument("Clutch: " + name + " = " + std::to_string(v) + " is invalid: " + rule);
     };
@@ -33,7 +34,20 @@ Clutch::Clutch(const SimTK::MobilizedBody& from, const SimTK::MobilizedBody& to,
 double Clutch::calcSlipSpeed(const SimTK::State& s) const { return pinSpeed(s, m_from) - pinSpeed(s, m_to); }
 
 double Clutch::calcCapacity(const SimTK::State& s) const {
+    if (isEngaged(s)) return m_params.capacity;
     return m_params.capacity * rampFraction(s.getTime(), m_params.engageTime, m_params.rampTime);
+}
+
+void Clutch::realizeTopology(SimTK::State& state) const {
+    m_engagedIndex = m_forces.allocateDiscreteVariable(state, SimTK::Stage::Dynamics, new SimTK::Value<bool>(false));
+}
+
+void Clutch::engage(SimTK::State& state) const {
+    SimTK::Value<bool>::updDowncast(m_forces.updDiscreteVariable(state, m_engagedIndex)) = true;
+}
+
+bool Clutch::isEngaged(const SimTK::State& state) const {
+    return SimTK::Value<bool>::downcast(m_forces.getDiscreteVariable(state, m_engagedIndex));
 }
 
 double Clutch::calcTorque(const SimTK::State& s) const {
@@ -41,7 +55,7 @@ double Clutch::calcTorque(const SimTK::State& s) const {
 }
 
 StartSequenceState Clutch::calcEngagement(const SimTK::State& s) const {
-    const double engaged = rampFraction(s.getTime(), m_params.engageTime, m_params.rampTime);
+    const double engaged = calcCapacity(s) / m_params.capacity;
     const double slip = calcSlipSpeed(s);
     const double lockSlip = std::max(10 * m_params.regularisationSpeed, 0.01 * std::abs(pinSpeed(s, m_from)));
     StartSequenceState q;
@@ -74,20 +88,22 @@ void buildClutch(const ElementSpec& spec, Scene& scene) {
     p.engageTime = spec.number("engage_time");
     p.rampTime = spec.number("ramp_time");
     p.regularisationSpeed = spec.number("regularisation_speed");
-    auto* impl = new Clutch(from->mobod, to->mobod, p);
+    auto* impl = new Clutch(scene.forces(), from->mobod, to->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::CouplingTorque, SimTK::Stage::Velocity,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
     scene.addProbe({spec.name + ".slip_speed", "rad/s", ProbeRole::Generic, SimTK::Stage::Velocity,
                     [impl](const SimTK::State& s) { return impl->calcSlipSpeed(s); }});
-    scene.addSteadyResidual({spec.name + ".slip_speed",
-                             [impl](const SimTK::State& s) { return impl->calcSlipSpeed(s); }});
+    // No steady residual on the slip: a locked pair creeps at
+    // ω_reg·atanh(T/M_c) to carry its torque, which the shafts' balance
+    // (zero acceleration) already fixes.
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
                          [impl](const SimTK::State& s) { return impl->calcTorque(s) * impl->calcSlipSpeed(s); },
                          "slip heat of the clutch " + spec.name});
     scene.addSpeedRelation(from->name, to->name, 1.0);
-    scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcEngagement(s); }});
+    scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcEngagement(s); },
+                            [impl](SimTK::State& s) { impl->engage(s); }});
     scene.note("force " + spec.name + " (Clutch)", "couples " + from->name + " to " + to->name + " by friction");
 }
 

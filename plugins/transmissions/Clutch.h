@@ -51,24 +51,32 @@ struct ClutchParams {
 class Clutch : public SimTK::Force::Custom::Implementation {
 public:
     /// Throws std::invalid_argument naming the parameter that is out of range.
-    Clutch(const SimTK::MobilizedBody& from, const SimTK::MobilizedBody& to, const ClutchParams& params);
+    Clutch(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& from, const SimTK::MobilizedBody& to,
+           const ClutchParams& params);
 
     double calcSlipSpeed(const SimTK::State& state) const;  ///< Δω [rad/s]
-    double calcCapacity(const SimTK::State& state) const;   ///< M_c(t) [N*m]
+    double calcCapacity(const SimTK::State& state) const;   ///< M_c(t) [N*m] (M_max once engaged for good)
     double calcTorque(const SimTK::State& state) const;     ///< T [N*m]
     /// The engagement as a starting sequence: finished once the capacity is
     /// full and the pair is locked, |Δω| <= max(10·ω_reg, 1 % of |ω_from|);
     /// fully engaged but slipping, it waits on the driven shaft.
     StartSequenceState calcEngagement(const SimTK::State& state) const;
+    /// Engages the clutch for good in `state` (steady running: the machine
+    /// after its start): capacity M_max whatever the time.
+    void engage(SimTK::State& state) const;
+    bool isEngaged(const SimTK::State& state) const;
     const ClutchParams& params() const { return m_params; }
 
     void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                    SimTK::Vector_<SimTK::Vec3>& particleForces, SimTK::Vector& mobilityForces) const override;
     SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+    void realizeTopology(SimTK::State& state) const override;
 
 private:
+    const SimTK::GeneralForceSubsystem& m_forces;
     SimTK::MobilizedBody m_from, m_to;
     ClutchParams m_params;
+    mutable SimTK::DiscreteVariableIndex m_engagedIndex;  // bool: engaged for good (engage())
 };
 
 }  // namespace milldyn

@@ -7,10 +7,14 @@
 // with time) or stalled (a sequence that waits on the shaft).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "driver/Cli.h"
 #include "driver/analyses/Analysis.h"
@@ -59,6 +63,21 @@ bool says(const AnalysisResult& r, const std::string& text) {
     return r.verdictText.find(text) != std::string::npos;
 }
 
+// Unfinished although the speed was held: the starter was still in circuit.
+void expectUnfinishedOnTheStarter(const AnalysisResult& r, const std::string& text) {
+    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
+    EXPECT_TRUE(says(r, text)) << r.verdictText;
+    expectHeldOnTheStarter(r);
+    expectNoStartValues(r);
+}
+
+// Stalled with the sequence waiting on the shaft.
+void expectStalledOnTheStarter(const AnalysisResult& r, const std::string& text) {
+    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
+    EXPECT_TRUE(says(r, text)) << r.verdictText;
+    expectNoStartValues(r);
+}
+
 // The measured defect: the 3 m x 4 m mill on its liquid-resistance starter
 // (shorted over 20 s) holds 1.626 rad/s (84 % of running) at 8 s.
 TEST(StarterVerdict, LiquidResistanceCutShortOnItsPlateauIsUnfinished) {
@@ -87,19 +106,13 @@ TEST(StarterVerdict, LiquidResistanceRunPastItsRampCompletesAndSaysSo) {
 TEST(StarterVerdict, SoftStartHeldOnItsRampIsUnfinished) {
     const AnalysisResult r = runModelFile(
         benchModel("soft", "    starter: soft_start\n    initial_voltage: 0.85\n    ramp_time: 10 s\n", 3), {});
-    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
-    EXPECT_TRUE(says(r, "soft start at V = 0.895 of rated, 30 % of its 10 s ramp")) << r.verdictText;
-    expectHeldOnTheStarter(r);
-    expectNoStartValues(r);
+    expectUnfinishedOnTheStarter(r, "soft start at V = 0.895 of rated, 30 % of its 10 s ramp");
 }
 
 TEST(StarterVerdict, StarDeltaStillInStarIsUnfinished) {
     const AnalysisResult r =
         runModelFile(benchModel("star_time", "    starter: star_delta\n    switch_times: [25 s]\n", 20), {});
-    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
-    EXPECT_TRUE(says(r, "still in star (torque / 3); it switches at 25 s")) << r.verdictText;
-    expectHeldOnTheStarter(r);
-    expectNoStartValues(r);
+    expectUnfinishedOnTheStarter(r, "still in star (torque / 3); it switches at 25 s");
 }
 
 // In star this Kloss motor gives a third of 46.2 N*m at standstill: it
@@ -109,9 +122,7 @@ TEST(StarterVerdict, StarDeltaStillInStarIsUnfinished) {
 TEST(StarterVerdict, StarDeltaWaitingForASpeedNeverReachedIsAStall) {
     const AnalysisResult r =
         runModelFile(benchModel("star_speed", "    starter: star_delta\n    switch_speeds: [160 rad/s]\n", 20), {});
-    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
-    EXPECT_TRUE(says(r, "waits for the shaft to reach 160 rad/s")) << r.verdictText;
-    expectNoStartValues(r);
+    expectStalledOnTheStarter(r, "waits for the shaft to reach 160 rad/s");
 }
 
 TEST(StarterVerdict, StarDeltaSwitchedCompletes) {
@@ -126,11 +137,7 @@ TEST(StarterVerdict, RotorResistanceStepStillInCircuitIsUnfinished) {
         benchModel("steps_time", "    starter: rotor_resistance\n    resistance_ratios: [3]\n    switch_times: [5 s]\n",
                    3),
         {});
-    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
-    EXPECT_TRUE(says(r, "rotor-resistance starter in step 1 of 1 (R/R_rotor = 3); it switches at 5 s"))
-        << r.verdictText;
-    expectHeldOnTheStarter(r);
-    expectNoStartValues(r);
+    expectUnfinishedOnTheStarter(r, "rotor-resistance starter in step 1 of 1 (R/R_rotor = 3); it switches at 5 s");
 }
 
 TEST(StarterVerdict, RotorResistanceWaitingForASpeedNeverReachedIsAStall) {
@@ -138,9 +145,7 @@ TEST(StarterVerdict, RotorResistanceWaitingForASpeedNeverReachedIsAStall) {
         benchModel("steps_speed",
                    "    starter: rotor_resistance\n    resistance_ratios: [3]\n    switch_speeds: [160 rad/s]\n", 3),
         {});
-    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
-    EXPECT_TRUE(says(r, "waits for the shaft to reach 160 rad/s")) << r.verdictText;
-    expectNoStartValues(r);
+    expectStalledOnTheStarter(r, "waits for the shaft to reach 160 rad/s");
 }
 
 // Torque limit 146.1 N*m against 30 N*m + 0.85 N*m*s/rad·ω: the load
@@ -189,10 +194,7 @@ std::string clutchModel(const std::string& name, double engageTime, double capac
 
 TEST(StarterVerdict, ClutchStillEngagingIsUnfinished) {
     const AnalysisResult r = runModelFile(clutchModel("clutch_engaging", 5, 150, 0, 3), {});
-    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
-    EXPECT_TRUE(says(r, "clutch: clutch engaging: capacity 0 % of 150 N*m, full at 5.5 s")) << r.verdictText;
-    expectHeldOnTheStarter(r);
-    expectNoStartValues(r);
+    expectUnfinishedOnTheStarter(r, "clutch: clutch engaging: capacity 0 % of 150 N*m, full at 5.5 s");
 }
 
 // The motor runs up alone (about 2.5 s), then a 60 N*m clutch engages from
@@ -202,9 +204,7 @@ TEST(StarterVerdict, ClutchStillEngagingIsUnfinished) {
 // the run-up.)
 TEST(StarterVerdict, ClutchEngagedButSlippingIsAStall) {
     const AnalysisResult r = runModelFile(clutchModel("clutch_slipping", 3.5, 60, 80, 10), {});
-    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
-    EXPECT_TRUE(says(r, "clutch fully engaged but slipping")) << r.verdictText;
-    expectNoStartValues(r);
+    expectStalledOnTheStarter(r, "clutch fully engaged but slipping");
 }
 
 TEST(StarterVerdict, ClutchEngagedAndLockedCompletes) {
@@ -212,6 +212,47 @@ TEST(StarterVerdict, ClutchEngagedAndLockedCompletes) {
     const AnalysisResult r = runModelFile(clutchModel("clutch_locked", 2.5, 150, 20, 6), {});
     EXPECT_EQ(r.verdict, "completed") << r.verdictText;
     EXPECT_TRUE(says(r, "clutch engaged and locked")) << r.verdictText;
+}
+
+// Steady running is the machine after its start: whatever the starter, a
+// run from `initial_state: steady` starts where the direct-on-line motor
+// runs, and stays there. Kloss against 60 N*m (closed form): sn = 0.02,
+// sk = sn·(λ + √(λ² − 1)) = 0.0958258, Mk = 2.5·97.4 = 243.5 N*m,
+// s = sk·(Mk/M − √((Mk/M)² − 1)) at M = 60 N*m, ω = ωc·(1 − s).
+TEST(StarterVerdict, SteadyRunningStartsWithEveryStarterAtItsEnd) {
+    const double wc = 1500 * 3.14159265358979323846 / 30, sn = 0.02, lambda = 2.5;
+    const double sk = sn * (lambda + std::sqrt(lambda * lambda - 1)), ratio = lambda * 97.4 / 60;
+    const double omega = wc * (1 - sk * (ratio - std::sqrt(ratio * ratio - 1)));
+    const std::vector<std::pair<std::string, std::string>> starters = {
+        {"star_delta", "    starter: star_delta\n    switch_times: [2 s]\n"},
+        {"star_delta_speed", "    starter: star_delta\n    switch_speeds: [160 rad/s]\n"},
+        {"soft_start", "    starter: soft_start\n    initial_voltage: 0.5\n    ramp_time: 10 s\n"},
+        {"rotor_resistance", "    starter: rotor_resistance\n    resistance_ratios: [4, 2]\n    switch_times: [1 s, 2 s]\n"},
+        {"liquid_resistance", "    starter: liquid_resistance\n    initial_resistance_ratio: 10\n    ramp_time: 10 s\n"},
+        {"frequency_converter", "    starter: frequency_converter\n    initial_frequency: 0.1\n    ramp_time: 5 s\n"}};
+    for (const auto& [name, lines] : starters) {
+        AnalysisResult r = runModelFile(benchModel("steady_" + name, lines, 3, 60), {{"scenario.initial_state", "steady"}});
+        EXPECT_EQ(r.verdict, "steady_held") << name << ": " << r.verdictText;
+        const std::size_t col = static_cast<std::size_t>(
+            std::find(r.columnNames.begin(), r.columnNames.end(), "shaft.speed") - r.columnNames.begin());
+        ASSERT_LT(col, r.columnNames.size());
+        EXPECT_NEAR(r.rows.front()[col], omega, 1e-6 * omega) << name;
+        EXPECT_NEAR(r.rows.back()[col], omega, 1e-6 * omega) << name;
+    }
+}
+
+// A clutch that engages at 5 s is engaged in steady running: the drum runs
+// with the motor from t = 0.
+TEST(StarterVerdict, SteadyRunningHasTheClutchEngaged) {
+    AnalysisResult r = runModelFile(clutchModel("clutch_steady", 5, 150, 20, 1), {{"scenario.initial_state", "steady"}});
+    const auto column = [&](const std::string& name) {
+        const auto it = std::find(r.columnNames.begin(), r.columnNames.end(), name);
+        EXPECT_NE(it, r.columnNames.end()) << name;
+        return static_cast<std::size_t>(it - r.columnNames.begin());
+    };
+    const double motor = r.rows.front()[column("motor_shaft.speed")], drum = r.rows.front()[column("drum.speed")];
+    EXPECT_GT(motor, 150.0);
+    EXPECT_NEAR(drum, motor, 0.01);
 }
 
 TEST(StarterVerdict, CliPrintsTheUnfinishedStarterAndNoStartTime) {

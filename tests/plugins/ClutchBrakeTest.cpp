@@ -23,7 +23,7 @@ TEST(Clutch, SlippingTransmitsItsRampedCapacityFromFastToSlow) {
     p.capacity = 300;
     p.engageTime = 1;
     p.rampTime = 2;
-    auto* c = new Clutch(a, b, p);
+    auto* c = new Clutch(sys.forces(), a, b, p);
     SimTK::Force::Custom force(sys.forces(), c);
     SimTK::State s = sys.defaultState();
     test::setShaft(s, a, 0, 100);
@@ -37,7 +37,7 @@ TEST(Clutch, SlippingTransmitsItsRampedCapacityFromFastToSlow) {
     EXPECT_NEAR(a.getOneUDot(s, SimTK::MobilizerUIndex(0)), -150.0 / 2, 1e-9);
     EXPECT_NEAR(b.getOneUDot(s, SimTK::MobilizerUIndex(0)), 150.0 / 1, 1e-9);
     p.rampTime = 0;  // a ramp of zero length
-    EXPECT_THROW(Clutch(a, b, p), std::invalid_argument);
+    EXPECT_THROW(Clutch(sys.forces(), a, b, p), std::invalid_argument);
 }
 
 TEST(Brake, BrakeOpposesRotationAndBackstopHoldsOnlyBackwards) {

@@ -5,7 +5,9 @@
 // element's output.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <memory>
 #include <set>
@@ -164,7 +166,7 @@ TEST(PeriodicLoadTest, StaggeredRowsOnOneBodyKeepOnlyHarmonicsThatAreMultiplesOf
         const double theta = 3.0 * t;
         const double expected = 6 + 33 * std::sin(3 * theta) + 57 * std::sin(6 * theta);
         EXPECT_NEAR(m.torqueOn(0), -expected, kRoundingRelTolerance * sumOfAmplitudes) << "t = " << t;
-        EXPECT_NEAR(m.load->calcTotalTorque(m.state), expected, kRoundingRelTolerance * sumOfAmplitudes)
+        EXPECT_NEAR(m.load->getTotalTorque(m.state), expected, kRoundingRelTolerance * sumOfAmplitudes)
             << "t = " << t;
     }
 }
@@ -260,7 +262,7 @@ TEST(PeriodicLoadTest, ExcitationOffLeavesOnlyTheSmoothedMean) {
     for (double t : {0.0, 0.25, 1.9}) {
         m.set(t, kRunningSpeed);
         for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(m.torqueOn(i), -4.0, kRoundingRelTolerance * 4);
-        EXPECT_NEAR(m.load->calcTotalTorque(m.state), 12.0, kRoundingRelTolerance * 12);
+        EXPECT_NEAR(m.load->getTotalTorque(m.state), 12.0, kRoundingRelTolerance * 12);
     }
     // Near standstill the mean is still smoothed: 4·tanh(1).
     m.set(0.25, kSmoothingSpeed);
@@ -303,7 +305,7 @@ TEST(PeriodicLoadTest, EveryListedBodyIsAcceleratedByItsRowAndNoOtherBody) {
     }
     EXPECT_EQ(test::shaftAcceleration(rig.system(), state, bystander), 0.0);
     EXPECT_EQ(test::torqueOn(rig.system(), force, state, bystander), 0.0);
-    EXPECT_NEAR(load->calcTotalTorque(state), total, kRoundingRelTolerance * 10);
+    EXPECT_NEAR(load->getTotalTorque(state), total, kRoundingRelTolerance * 10);
     // The reaction −(−M_r) acts on ground through each pin.
     rig.system().realize(state, SimTK::Stage::Acceleration);
     SimTK::Vector_<SimTK::SpatialVec> reactions;
@@ -673,6 +675,159 @@ scenario: {analysis: transient, end_time: 1 s}
     }
     EXPECT_THROW(readModelText(text, "m.yaml", defaultModelReader(), {{"elements.crushing.arrangement", "in_phase"}}),
                  SpecError);
+}
+
+}  // namespace
+}  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+// ---- issue 18 follow-up: the harmonics by recurrence, the load cached -----------
+
+// The direct sum Σ_k b_k·sin(k·θ) in long double: k·θ is exact there (θ has
+// 53 bits, k ≤ 64 six more, the x87 mantissa 64), so this is the series at
+// the element's own θ to ~1e-19, free of the argument rounding of k·θ in
+// double (kθ·ε/2: 2e-13 at k = 50, θ = 40).
+long double directSeriesLong(const std::vector<double>& b, double theta) {
+    long double sum = 0;
+    for (std::size_t i = 0; i < b.size(); ++i)
+        sum += static_cast<long double>(b[i]) * std::sin(static_cast<long double>(i + 1) * theta);
+    return sum;
+}
+
+// The element's θ for row r at time t, as the class comment writes it.
+double rowAngle(const PeriodicLoad& load, int row, double t) {
+    return load.params().fundamentalFrequency * t + load.rowPhase(row);
+}
+
+// The recurrence's rounding grows like k·ε; 1e-13 of Σ|b_k| leaves room for
+// ~50·(a few ε) at 50 harmonics (seen: 1.5e-16 for the crusher's 4, 9.1e-16
+// for 50 flat, 3.2e-15 for the 50th harmonic alone; docs/benchmarks.md).
+constexpr double kRecurrenceRelTolerance = 1e-13;
+
+TEST(PeriodicLoadRecurrence, MatchesTheDirectSumForTheModelsHarmonicsAndForFifty) {
+    // The crusher's spectrum (4 harmonics, roll_crusher.yaml), a flat one of
+    // 50 (the worst case for a k·ε growth: the top harmonics weigh as much
+    // as the first) and a 1/k one of 50; 1, 2 and 3 harmonics for the
+    // recurrence's start.
+    // Last, the 50th harmonic alone (b_50 = 1, the rest 0): its error
+    // relative to its own amplitude, the recurrence's worst term.
+    std::vector<double> flat50(50, 100.0), inverse50, top50(50, 0.0);
+    for (int k = 1; k <= 50; ++k) inverse50.push_back(7440.0 * 0.6 / k);
+    top50.back() = 1.0;
+    const std::vector<std::vector<double>> spectra = {
+        {4464, 2232, 1488, 1116}, {5.0}, {5.0, 3.0}, {5.0, 3.0, 1.0}, flat50, inverse50, top50};
+    for (const auto& b : spectra) {
+        double worst = 0;
+        double scale = 0;
+        for (double bk : b) scale += bk;
+        // Nine staggered rows at the crusher's P_1, times up to 1000 s
+        // (θ up to ~4000 rad: the long runs of a sweep).
+        LoadOnShafts m(loadParams(9, 7440.0, b, 3.973, true), {639.0});
+        for (double t : {0.0, 1e-3, 0.37, 1.58, 2.5, 5.0, 9.999, 10.0, 47.3, 100.0, 333.3, 1000.0})
+            for (int r = 0; r < 9; ++r) {
+                const double theta = rowAngle(*m.load, r, t);
+                const double err = std::abs(m.load->periodicPart(r, t) -
+                                            static_cast<double>(directSeriesLong(b, theta))) / scale;
+                worst = std::max(worst, err);
+                EXPECT_LE(err, kRecurrenceRelTolerance) << b.size() << " harmonics, t = " << t << ", row " << r;
+            }
+        std::cout << "[          ] " << b.size() << " harmonics (b_1 = " << b[0]
+                  << "): largest |recurrence - direct| / sum |b_k| = " << worst << "\n";
+    }
+}
+
+// At the crusher's 4 harmonics and times of its runs (θ ≤ 40 rad) the
+// direct sum in double, sin(k·θ) per harmonic as the element had it before,
+// agrees as closely: the argument rounding kθ·ε/2 ≤ 9e-15 there.
+TEST(PeriodicLoadRecurrence, MatchesTheDoubleDirectSumOverTheCrushersRun) {
+    const std::vector<double> b = {4464, 2232, 1488, 1116};
+    const double scale = 4464 + 2232 + 1488 + 1116;
+    LoadOnShafts m(loadParams(9, 7440.0, b, 3.973, true), {639.0});
+    for (int i = 0; i <= 1000; ++i) {
+        const double t = 0.01 * i;
+        for (int r = 0; r < 9; ++r) {
+            const double theta = rowAngle(*m.load, r, t);
+            double direct = 0;
+            for (std::size_t k = 0; k < b.size(); ++k) direct += b[k] * std::sin((k + 1) * theta);
+            EXPECT_LE(std::abs(m.load->periodicPart(r, t) - direct) / scale, kRecurrenceRelTolerance)
+                << "t = " << t << ", row " << r;
+        }
+    }
+}
+
+// The cache entry follows every input: time, each speed, and the excitation
+// switch, which invalidates Dynamics only (so the entry names it as a
+// prerequisite). Each value is checked against the law written out again,
+// after the entry was filled for the previous input.
+TEST(PeriodicLoadCache, ValuesFollowTimeSpeedAndTheExcitationSwitch) {
+    const std::vector<double> J = {0.1, 0.2, 0.4};
+    const PeriodicLoadParams p = loadParams(3, 4.0, {3.0, 2.0, 1.0}, 2.0, true);
+    LoadOnShafts m(p, J);
+    const SimTK::MultibodySystem& system = m.rig.system();
+    auto expectRows = [&](double t, const std::vector<double>& w, bool excited, const char* what) {
+        const PeriodicLoad::Values& v = m.load->getValues(m.state);
+        double total = 0, power = 0;
+        for (int r = 0; r < 3; ++r) {
+            const double M = excited ? rowLoad(p, r, t, w[r]) : p.meanTorque * std::tanh(w[r] / p.smoothingSpeed);
+            EXPECT_NEAR(v.rowTorques[r], M, kRoundingRelTolerance * 10) << what << ", row " << r;
+            EXPECT_NEAR(v.bodyTorques[r], M, kRoundingRelTolerance * 10) << what << ", row " << r;
+            total += M;
+            power += M * w[r];
+        }
+        EXPECT_NEAR(m.load->getTotalTorque(m.state), total, kRoundingRelTolerance * 30) << what;
+        EXPECT_NEAR(m.load->getAbsorbedPower(m.state), power, kRoundingRelTolerance * 30 * 10) << what;
+    };
+    m.set(0.25, kRunningSpeed);
+    system.realize(m.state, SimTK::Stage::Acceleration);
+    expectRows(0.25, {10, 10, 10}, true, "start");
+    m.state.setTime(0.8);
+    system.realize(m.state, SimTK::Stage::Acceleration);
+    expectRows(0.8, {10, 10, 10}, true, "time changed");
+    test::setShaft(m.state, m.shafts[1], 0.0, -3.0);
+    system.realize(m.state, SimTK::Stage::Acceleration);
+    expectRows(0.8, {10, -3, 10}, true, "speed changed");
+    // The switch alone: the State stays realized through Velocity.
+    m.load->setExcitationOn(m.state, false);
+    EXPECT_GE(m.state.getSystemStage(), SimTK::Stage::Velocity);
+    expectRows(0.8, {10, -3, 10}, false, "excitation off");
+    m.load->setExcitationOn(m.state, true);
+    expectRows(0.8, {10, -3, 10}, true, "excitation on again");
+    // A copy of the State carries a valid entry; changing the copy leaves
+    // the original's.
+    SimTK::State copy = m.state;
+    copy.setTime(1.1);
+    system.realize(copy, SimTK::Stage::Velocity);
+    EXPECT_NEAR(m.load->getTotalTorque(copy), rowLoad(p, 0, 1.1, 10) + rowLoad(p, 1, 1.1, -3) + rowLoad(p, 2, 1.1, 10),
+                kRoundingRelTolerance * 30);
+    expectRows(0.8, {10, -3, 10}, true, "original after the copy changed");
+}
+
+// Nine rows on one body in phase, and nine staggered: the body gets the sum
+// of its rows, rows of equal phase the same torque.
+TEST(PeriodicLoadCache, RowsOnOneBodySumIntoItsTorque) {
+    for (bool staggered : {false, true}) {
+        const PeriodicLoadParams p = loadParams(9, 7440.0, {4464, 2232, 1488, 1116}, 3.973, staggered);
+        LoadOnShafts m(p, {639.0});
+        m.set(2.3, 0.4966);
+        m.rig.system().realize(m.state, SimTK::Stage::Velocity);
+        const PeriodicLoad::Values& v = m.load->getValues(m.state);
+        double sum = 0;
+        for (int r = 0; r < 9; ++r) {
+            EXPECT_NEAR(v.rowTorques[r], rowLoad(p, r, 2.3, 0.4966), kRoundingRelTolerance * 17000) << "row " << r;
+            sum += rowLoad(p, r, 2.3, 0.4966);
+        }
+        ASSERT_EQ(v.bodyTorques.size(), 1u);
+        EXPECT_NEAR(v.bodyTorques[0], sum, kRoundingRelTolerance * 9 * 17000);
+        EXPECT_NEAR(m.torqueOn(0), -sum, kRoundingRelTolerance * 9 * 17000);
+    }
+}
+
+TEST(PeriodicLoadCache, ValuesBelowVelocityStageAreRefused) {
+    LoadOnShafts m(loadParams(1, 1.0, {1.0}, 1.0, true), {kShaftInertia});
+    m.set(0.1, 1.0);  // invalidates Velocity
+    EXPECT_THROW((void)m.load->getValues(m.state), std::exception);
 }
 
 }  // namespace

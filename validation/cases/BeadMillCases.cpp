@@ -14,6 +14,7 @@
 //    the loads assumed in the model files (flagged: not reproducible).
 
 #include "driver/ModelFile.h"
+#include "plugins/scene/Format.h"
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/analyses/LinearModel.h"
@@ -143,12 +144,7 @@ namespace {
 
 using namespace beadmill;
 
-std::string fmt(double v, int precision = 4) {
-    std::ostringstream s;
-    s.precision(precision);
-    s << v;
-    return s.str();
-}
+std::string fmt(double v, int precision = 4) { return formatNumber(v, precision); }
 
 void staticCase(int which, std::vector<ValidationRow>& rows) {
     const std::string name = std::string("bead_mill_static_") + kTags[which];

@@ -6,6 +6,7 @@
 //      line) and vs the oracle's exact first stop of eq (11).
 
 #include "driver/analyses/Analysis.h"
+#include "plugins/scene/Format.h"
 #include "validation/cases/BurrMillCases.h"
 #include "validation/cases/ValidationCases.h"
 #include "validation/oracles/BurrMillOracle.h"
@@ -27,11 +28,7 @@ constexpr double kMultibodyTolerance = 1e-6;
 std::string motorTag(double kW) { return kW > 5 ? "5p5kW" : "3p2kW"; }
 std::string feedTag(std::size_t i) { return i % 3 == 0 ? "idle" : i % 3 == 1 ? "feed50_70" : "feed130_150"; }
 
-std::string fmt(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string fmt(double v) { return formatNumber(v); }
 
 /// The oracle's parameters from the model file: an adapter, so the oracle
 /// never reads a ModelSpec.

@@ -23,6 +23,7 @@
 // location), and the cases could do the same.
 
 #include "driver/ModelFile.h"
+#include "plugins/scene/Format.h"
 #include "driver/analyses/Analysis.h"
 #include "validation/cases/PlanetaryBeltCases.h"
 #include "validation/cases/ValidationCases.h"
@@ -53,11 +54,7 @@ const char* kModel = "/planetary_belt_200x1000.yaml";
 std::string fmt(double v) { return formatExact(v); }
 
 /// Short form for labels.
-std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string num(double v) { return formatNumber(v); }
 
 bool wanted(const std::string& name, const std::string& filter) {
     return filter.empty() || name.find(filter) != std::string::npos;

@@ -11,6 +11,7 @@
 // which is how the oracle (and the paper) state the system.
 
 #include "driver/ModelFile.h"
+#include "plugins/scene/Format.h"
 #include "driver/analyses/Analysis.h"
 #include "validation/cases/RollCrusherCases.h"
 #include "validation/cases/ValidationCases.h"
@@ -131,11 +132,7 @@ std::complex<double> nearest(const std::vector<std::complex<double>>& set, std::
                              [z](auto a, auto b) { return std::abs(a - z) < std::abs(b - z); });
 }
 
-std::string fmt(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string fmt(double v) { return formatNumber(v); }
 
 void twoMassRootsCase(std::vector<ValidationRow>& rows) {
     const std::string name = "roll_crusher_2mass_roots";
