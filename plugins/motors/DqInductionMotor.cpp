@@ -63,7 +63,8 @@ Complex DqInductionMotor::calcSupplyVoltage(double t) const {
 
 double DqInductionMotor::calcVoltageFactor(const SimTK::State& s) const {
     // Star–delta's torque factor 1/3 (Starter) is u² on the windings.
-    const SupplyState u = m_starter.supply(s.getTime(), getStarterStep(s));
+    const SupplyState u =
+        isStarterFinished(s) ? m_starter.finalSupply() : m_starter.supply(s.getTime(), getStarterStep(s));
     return u.voltage * std::sqrt(u.connection);
 }
 
@@ -78,7 +79,21 @@ double DqInductionMotor::calcLineCurrent(const SimTK::State& s) const {
 }
 
 StartSequenceState DqInductionMotor::calcStarterProgress(const SimTK::State& s) const {
+    if (isStarterFinished(s)) {
+        StartSequenceState q;
+        q.text = Starter::kindName(m_params.starter.kind) + " starter ended (the run started from steady running)";
+        return q;
+    }
     return m_starter.progress(s.getTime(), getStarterStep(s), 1.0, false);
+}
+
+void DqInductionMotor::finishStarter(SimTK::State& s) const {
+    SimTK::Value<bool>::updDowncast(m_forces.updDiscreteVariable(s, m_finishedIndex)) = true;
+    setStarterStep(s, m_starter.switchCount());
+}
+
+bool DqInductionMotor::isStarterFinished(const SimTK::State& s) const {
+    return SimTK::Value<bool>::downcast(m_forces.getDiscreteVariable(s, m_finishedIndex));
 }
 
 int DqInductionMotor::getStarterStep(const SimTK::State& s) const {
@@ -123,6 +138,7 @@ void DqInductionMotor::realizeTopology(SimTK::State& s) const {
     m_flux = m_forces.allocateZ(s, SimTK::Vector(4, 0.0));
     // A switch changes the voltage, so the step invalidates Dynamics.
     m_stepIndex = m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<int>(0));
+    m_finishedIndex = m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<bool>(false));
 }
 
 void DqInductionMotor::realizeAcceleration(const SimTK::State& s) const {
@@ -189,7 +205,8 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     }
     // A start cut short while the starter is still in circuit is unfinished.
     if (st.kind != StarterKind::DirectOnLine)
-        scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); }});
+        scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); },
+                                [impl](SimTK::State& s) { impl->finishStarter(s); }});
     scene.addSpeedHint(shaft->name, 2 * M_PI * p.frequency / p.polePairs);
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::DriveTorque, SimTK::Stage::Dynamics,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});

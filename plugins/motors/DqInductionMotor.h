@@ -97,6 +97,10 @@ public:
     /// Where the starter's sequence stands in this state (Starter::progress):
     /// star until the switch, the soft start's ramp until it ends.
     StartSequenceState calcStarterProgress(const SimTK::State& state) const;
+    /// Ends the starter's sequence in `state` for good (steady running): the
+    /// supply is Starter::finalSupply (delta, full voltage) from then on.
+    void finishStarter(SimTK::State& state) const;
+    bool isStarterFinished(const SimTK::State& state) const;
     int getStarterStep(const SimTK::State& state) const;
     void setStarterStep(SimTK::State& state, int step) const;
     double calcTorque(const SimTK::State& state) const;           ///< [N*m]
@@ -124,6 +128,7 @@ private:
     double m_Ls = 0, m_Lr = 0, m_D = 0;
     mutable SimTK::ZIndex m_flux;  // ψsα, ψsβ, ψrα, ψrβ
     mutable SimTK::DiscreteVariableIndex m_stepIndex;  // starter step: 0, 1 after the star–delta switch
+    mutable SimTK::DiscreteVariableIndex m_finishedIndex;  // bool: the starter's sequence ended (finishStarter)
 };
 
 }  // namespace milldyn

@@ -139,3 +139,27 @@ TEST(DqStarter, StartCutShortOnTheStarterIsUnfinished) {
 
 }  // namespace
 }  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+// Steady running is the machine after its start (solveSteadyState finishes
+// every starting sequence): from the solved steady speed a star–delta or
+// soft-started dq machine runs in delta / at full voltage at once.
+TEST(DqStarter, SteadyRunningIsAfterTheStart) {
+    const std::string models = std::string(MILLDYN_SOURCE_DIR) + "/models/";
+    for (const char* bench : {"start_bench_dq_star_delta.yaml", "start_bench_dq_soft_start.yaml"}) {
+        const AnalysisResult r = runModelFile(models + bench, {{"scenario.initial_state", "steady"}, {"scenario.end_time", "0.5 s"}});
+        EXPECT_EQ(r.verdict, "steady_held") << bench << ": " << r.verdictText;
+        EXPECT_DOUBLE_EQ(r.value(0, "motor.voltage"), 1.0) << bench;
+        EXPECT_DOUBLE_EQ(r.value(r.rows.size() - 1, "motor.voltage"), 1.0) << bench;
+        if (r.findColumn("motor.line_current") != std::string::npos) {  // star–delta: in delta, line = √3 × winding
+            const std::size_t last = r.rows.size() - 1;
+            EXPECT_NEAR(r.value(last, "motor.line_current"), std::sqrt(3.0) * r.value(last, "motor.current"),
+                        1e-9 * r.value(last, "motor.current"));
+        }
+    }
+}
+
+}  // namespace
+}  // namespace milldyn

@@ -20,11 +20,11 @@
 
 #include "driver/analyses/Analysis.h"
 #include "validation/cases/ValidationCases.h"
+#include "plugins/scene/Format.h"
 #include "validation/oracles/DqMachineOracle.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,12 +34,8 @@ namespace {
 
 namespace oc = milldyn::oracles;
 
-/// "1.2345 s": a sample's time for a label.
-std::string seconds(double t) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4f s", t);
-    return text;
-}
+/// "1.2345 s": a sample's time (0.1 ms samples) for a label.
+std::string seconds(double t) { return formatNumber(std::round(t * 1e4) / 1e4) + " s"; }
 
 std::string model(const std::string& name) { return modelsDirectory() + "/start_bench_" + name + ".yaml"; }
 
@@ -146,19 +142,18 @@ void compareWithOracle(const std::string& caseName, const std::string& bench, co
         track(torque, r.value(i, "motor.torque"), o[k].torque, peakTorque, t);
         track(current, r.value(i, "motor.current"), o[k].statorCurrent, peakCurrent, t);
     }
-    char acc[32];
-    std::snprintf(acc, sizeof acc, "%g", spec.integrator.accuracy);
-    const std::string at = accuracy.empty() ? std::string("as shipped (accuracy ") + acc + ")" : "at accuracy " + accuracy;
+    const std::string at = accuracy.empty() ? "as shipped (accuracy " + formatNumber(spec.integrator.accuracy) + ")"
+                                            : "at accuracy " + accuracy;
     auto where = [](const Worst& w) { return " (worst at " + seconds(w.time) + ")"; };
     rows.push_back(worstRow(caseName, "speed, every sample, " + at + where(speed), "rad/s", speed.model, speed.oracle,
                             speed.rel, tolerance, "error over ω_s; Krause's fifth-order model, currents, synchronous frame, RK4"));
     rows.push_back(worstRow(caseName, "torque, every sample, " + at + where(torque), "N*m", torque.model, torque.oracle,
                             torque.rel, tolerance,
-                            "error over the oracle's peak torque " + formatExact(std::round(peakTorque)) +
+                            "error over the oracle's peak torque " + formatNumber(peakTorque, 4) +
                                 " N*m; oracle's T = 1.5·p·L_M·(i_qs·i'_dr − i_ds·i'_qr)"));
     rows.push_back(worstRow(caseName, "stator current (rms phase), every sample, " + at + where(current), "A",
                             current.model, current.oracle, current.rel, tolerance,
-                            "error over the oracle's peak current " + formatExact(std::round(peakCurrent)) + " A"));
+                            "error over the oracle's peak current " + formatNumber(peakCurrent, 4) + " A"));
     // Time to 95 % of the final speed, each run to its own final speed.
     std::vector<oc::DqSample> m(r.rows.size());
     for (std::size_t i = 0; i < r.rows.size(); ++i) {
@@ -245,7 +240,7 @@ void softStartHeldCase(std::vector<ValidationRow>& rows) {
                             "torque along the ramp 0.3 → 1 over 6 s, 2 s on (worst at " + seconds(tT) + ")", "N*m",
                             mT, oT, worstT, kTightTolerance,
                             "circuit at V(t): u²·T_circuit plus the ramp's lag term (i = u·I0 + u'·I1, Z(0)·I1 = −L·I0); "
-                            "the V² law alone is off by up to " + formatExact(std::round(lagOnly * 1e5) / 1e5) +
+                            "the V² law alone is off by up to " + formatNumber(lagOnly, 2) +
                                 " here, the flux lagging the ramp"));
     rows.push_back(worstRow("start_dq_soft_start_v2", "stator current along the ramp (worst at " + seconds(tI) + ")",
                             "A", mI, oI, worstI, kTightTolerance, "circuit current at V(t), ∝ V, with the lag term"));
