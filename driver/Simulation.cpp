@@ -931,6 +931,7 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
         // Kept reactions (journal loads) consistent with each trial state: a
         // journal's friction at steady running is its running load's, not the
         // zero load of a state never realized (the Kloss speed without it).
+        for (const auto& f : scene.steadyInitializers()) f(s);
         settleLaggedValues(scene, s);
         system.realize(s, SimTK::Stage::Acceleration);
         Eigen::VectorXd r(nr);
@@ -965,6 +966,7 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
         if (scale == 1 && dx.norm() <= 1e-13 * (1 + x.norm())) break;
     }
     setX(state, x);
+    for (const auto& f : scene.steadyInitializers()) f(state);
     settleLaggedValues(scene, state);
     system.realize(state, SimTK::Stage::Acceleration);
     // Converged means the accelerations are negligible against what the

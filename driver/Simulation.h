@@ -191,7 +191,8 @@ std::string whyNoReplay(const Scene& scene, const SimTK::State& start);
 /// while solving): all accelerations zero and every steady residual of the
 /// scene (coupling twist rates) zero, the first body's angle held. Starts
 /// from the scene's speed hints, with every starting sequence at its end
-/// (Scene::StartSequence::finish). Returns the state with the excitations on,
+/// (Scene::StartSequence::finish) and the elements' own states at their
+/// steady running (Scene::steadyInitializers). Returns the state with the excitations on,
 /// realized to Acceleration. Throws AnalysisError naming the largest residual if it does
 /// not converge.
 SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess);

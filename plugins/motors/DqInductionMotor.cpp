@@ -104,6 +104,21 @@ void DqInductionMotor::setStarterStep(SimTK::State& s, int step) const {
     SimTK::Value<int>::updDowncast(m_forces.updDiscreteVariable(s, m_stepIndex)) = step;
 }
 
+void DqInductionMotor::setSteadyFluxes(SimTK::State& s) const {
+    const DqInductionMotorParams& p = m_params;
+    const double ws = 2 * M_PI * p.frequency;
+    const Complex k = (p.rotorResistance * p.mainInductance / m_D) /
+                      Complex(p.rotorResistance * m_Ls / m_D, ws - p.polePairs * pinSpeed(s, m_shaft));
+    const Complex statorFlux =
+        calcTerminalVoltage(s) / (Complex(0, ws) + p.statorResistance * (m_Lr - p.mainInductance * k) / m_D);
+    const Complex rotorFlux = k * statorFlux;
+    SimTK::Vector& z = m_forces.updZ(s);
+    z[m_flux] = statorFlux.real();
+    z[m_flux + 1] = statorFlux.imag();
+    z[m_flux + 2] = rotorFlux.real();
+    z[m_flux + 3] = rotorFlux.imag();
+}
+
 double DqInductionMotor::calcTorque(const SimTK::State& s) const {
     return 1.5 * m_params.polePairs * std::imag(std::conj(getStatorFlux(s)) * calcStatorCurrent(s));
 }
@@ -207,6 +222,8 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     if (st.kind != StarterKind::DirectOnLine)
         scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); },
                                 [impl](SimTK::State& s) { impl->finishStarter(s); }});
+    // Steady running with the field built up (not switched on unexcited).
+    scene.addSteadyInitializer([impl](SimTK::State& s) { impl->setSteadyFluxes(s); });
     scene.addSpeedHint(shaft->name, 2 * M_PI * p.frequency / p.polePairs);
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::DriveTorque, SimTK::Stage::Dynamics,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});

@@ -103,6 +103,13 @@ public:
     bool isStarterFinished(const SimTK::State& state) const;
     int getStarterStep(const SimTK::State& state) const;
     void setStarterStep(SimTK::State& state, int step) const;
+    /// Sets the fluxes to their steady running at the shaft speed ω and the
+    /// time in `state` (the T circuit's phasors, ψ = Ψ·e^(jω_s t)):
+    /// <pre>
+    ///   Ψ_r = k·Ψ_s,  k = (Rr·Lm/D) / (j·(ω_s − p·ω) + Rr·Ls/D)
+    ///   Ψ_s = u·V̂ / (j·ω_s + Rs·(Lr − Lm·k)/D)
+    /// </pre>
+    void setSteadyFluxes(SimTK::State& state) const;
     double calcTorque(const SimTK::State& state) const;           ///< [N*m]
     double calcInputPower(const SimTK::State& state) const;       ///< [W]
     double calcCopperLoss(const SimTK::State& state) const;       ///< [W]

@@ -19,7 +19,7 @@ namespace milldyn {
 /// plugin built against another value is refused.
 // 2: SourceLocation::includedFrom; 3: Scene::addSketch; 4: Scene's shared
 // reactions, prescribed trajectories, omit(), LaggedValue current/keep,
-// ElementSchema::outputOnly; 5: Probe::label; 6: Scene::addStartSequence.
+// ElementSchema::outputOnly; 5: Probe::label; 6: Scene::addStartSequence, addSteadyInitializer.
 constexpr int kPluginAbiVersion = 6;
 
 /// Builds one element into a scene. Throws SpecError for input the schema

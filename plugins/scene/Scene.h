@@ -255,6 +255,13 @@ public:
     void addStartSequence(StartSequence q) { m_startSequences.push_back(std::move(q)); }
     const std::vector<StartSequence>& startSequences() const { return m_startSequences; }
 
+    /// Sets an element's own continuous states (a dq machine's fluxes) to
+    /// their steady running at the speeds and time in the state:
+    /// solveSteadyState calls each at every trial state and on the state it
+    /// returns, so steady running starts with its fields built up.
+    void addSteadyInitializer(std::function<void(SimTK::State&)> f) { m_steadyInitializers.push_back(std::move(f)); }
+    const std::vector<std::function<void(SimTK::State&)>>& steadyInitializers() const { return m_steadyInitializers; }
+
     /// Values elements derive from their parameters (see DerivedValue).
     void addDerivedValue(DerivedValue v) { m_derived.push_back(std::move(v)); }
     const std::vector<DerivedValue>& derivedValues() const { return m_derived; }
@@ -297,6 +304,7 @@ private:
     std::vector<PrescribedTrajectory> m_trajectories;
     std::vector<std::pair<std::string, std::function<void(SimTK::State&, bool)>>> m_excitations;
     std::vector<StartSequence> m_startSequences;
+    std::vector<std::function<void(SimTK::State&)>> m_steadyInitializers;
 };
 
 /// One fixed-point sweep over the scene's lagged values (only the eachStep

@@ -5,11 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "driver/ModelFile.h"
 #include "driver/analyses/Analysis.h"
 #include "plugins/motors/DqInductionMotor.h"
+#include "validation/oracles/StartOracle.h"
 #include "tests/plugins/ShaftFixture.h"
 
 namespace milldyn {
@@ -159,6 +162,42 @@ TEST(DqStarter, SteadyRunningIsAfterTheStart) {
                         1e-9 * r.value(last, "motor.current"));
         }
     }
+}
+
+// Steady running has its field built up: the dq bench's machine against
+// 100 N*m from initial_state steady runs at the T circuit's slip from t = 0,
+// with no switch-on transient (it was switched on unexcited: 477 N*m).
+TEST(DqStarter, SteadyRunningStartsWithTheFieldBuiltUp) {
+    const std::string path = ::testing::TempDir() + "/dq_steady_loaded.yaml";
+    {
+        std::ifstream in(std::string(MILLDYN_SOURCE_DIR) + "/models/start_bench_dq.yaml");
+        std::stringstream text;
+        text << in.rdbuf();
+        std::string model = text.str();
+        const std::string anchor = "scenario:";
+        model.insert(model.find(anchor), "  - type: ResistanceTorque\n    name: load\n    body: shaft\n"
+                                         "    constant_torque: 100 N*m\n    smoothing_speed: 0.01 rad/s\n");
+        std::ofstream(path) << model;
+    }
+    const AnalysisResult r =
+        runModelFile(path, {{"scenario.initial_state", "steady"}, {"scenario.end_time", "0.2 s"},
+                            {"integrator.accuracy", "1e-9"}});
+    // The T circuit's slip at 100 N*m (oracle), on the stable branch.
+    const auto circuit = [](double slip) {
+        return oracles::equivalentCircuitTorque(slip, 0.03, 0.04, 0.0003239643625499069, 0.0003239643625499069,
+                                                0.009225332222963813, 2, 100, 50);
+    };
+    double lo = 1e-9, hi = 0.05;  // the breakdown slip is above 0.05 for this machine
+    ASSERT_GT(circuit(hi), 100.0);
+    for (int i = 0; i < 100; ++i) (circuit(0.5 * (lo + hi)) < 100 ? lo : hi) = 0.5 * (lo + hi);
+    const double omega = (1 - lo) * 2 * M_PI * 50 / 2;
+    double worstTorque = 0, worstSpeed = 0;
+    for (std::size_t i = 0; i < r.rows.size(); ++i) {
+        worstTorque = std::max(worstTorque, std::abs(r.value(i, "motor.torque") - 100));
+        worstSpeed = std::max(worstSpeed, std::abs(r.value(i, "shaft.speed") - omega));
+    }
+    EXPECT_LT(worstTorque, 1e-6 * 100) << "largest torque deviation " << worstTorque;
+    EXPECT_LT(worstSpeed, 1e-7 * omega) << "largest speed deviation " << worstSpeed;
 }
 
 }  // namespace
