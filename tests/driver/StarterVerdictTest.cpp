@@ -163,6 +163,25 @@ TEST(StarterVerdict, ConverterHeldAtItsTorqueLimitIsAStall) {
     expectNoStartValues(r);
 }
 
+// Current limit 42.75 A (1.5 I_N) on the circle of the catalogue data: the
+// hold slip 0.0321 gives the Kloss torque 146.72 N*m (the derived
+// hold_torque), which the load 30 N*m + 0.85 N*m*s/rad·ω reaches at
+// (146.72 − 30)/0.85 = 137.3 rad/s, where the converter holds for good.
+TEST(StarterVerdict, ConverterHeldAtItsCurrentLimitIsAStallAndSaysSo) {
+    const AnalysisResult r = runModelFile(
+        benchModel("converter_current_held",
+                   "    rated_current: 28.5 A\n    rated_power_factor: 0.85\n    locked_rotor_current_ratio: 7\n"
+                   "    starter: frequency_converter\n    initial_frequency: 0.1\n    ramp_time: 1 s\n"
+                   "    current_limit: 42.75 A\n",
+                   15, 30, 0.85),
+        {});
+    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
+    EXPECT_TRUE(says(r, "its ramp held at the current limit")) << r.verdictText;
+    ASSERT_NE(r.find("speed_at_end"), nullptr);
+    EXPECT_NEAR(r.find("speed_at_end")->value, (146.72 - 30) / 0.85, 0.01 * 137.3);
+    expectNoStartValues(r);
+}
+
 TEST(StarterVerdict, ConverterMidRampIsUnfinishedAndNamesTheConverter) {
     const AnalysisResult r = runModelFile(kModels + "start_bench_converter.yaml", {{"scenario.end_time", "0.5 s"}});
     EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
