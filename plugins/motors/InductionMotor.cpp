@@ -487,7 +487,8 @@ void crossCheckInductionMotor(const ElementSpec& e) {
         try {
             calcCurrentHoldSlipSpeed(TorqueSpeedCurve(p), p.starter.currentLimit);
         } catch (const std::invalid_argument& x) {
-            throw e.error("current_limit", x.what());
+            const std::string why = x.what(), prefix = "InductionMotor: ";
+            throw e.error("current_limit", why.rfind(prefix, 0) == 0 ? why.substr(prefix.size()) : why);
         }
     }
 }

@@ -526,7 +526,7 @@ TEST(InductionMotorInput, BadLossAndCurrentLimitInputsGiveOneLocatedLine) {
               0u)
         << noData;
     const std::string low = errorOf(circle + converter + "    current_limit: 10 A\n");
-    EXPECT_NE(low.find("error: motor.current_limit: InductionMotor: current_limit = 10 A is not above the no-load "
+    EXPECT_NE(low.find("error: motor.current_limit: current_limit = 10 A is not above the no-load "
                        "(magnetising) current 11.87"),
               std::string::npos)
         << low;
