@@ -408,9 +408,9 @@ struct LossData {
 };
 
 void efficiencyCase(std::vector<ValidationRow>& rows) {
-    // At the bench's accuracy 1e-6 the steady efficiency carries the
-    // integrator's error (measured 8e-7 at 20 N*m); these comparisons run at
-    // 1e-9, as kIntegratedTolerance assumes.
+    // At accuracy 1e-6 the steady efficiency carries the integrator's error
+    // (measured 8e-7 at 20 N*m, against the tolerance 1e-6); these
+    // comparisons run at 1e-9, as kIntegratedTolerance assumes.
     const Override tight{"integrator.accuracy", "1e-9"};
     ModelSpec spec;
     const AnalysisResult r = runModelFile(model("efficiency"), {tight}, &spec);
