@@ -410,8 +410,9 @@ void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK
                               "rated_efficiency; a prescribed drive's work)"});
     result.results.push_back({"energy_to_loads", loads, "J", "work taken by the loads (grinding, crushing)"});
     result.results.push_back({"energy_dissipated", dissipated, "J",
-                              "heat: motors (rotors; stators where rated_efficiency is given), friction (journals, brakes, clutch slip) and damping "
-                              "(couplings, belts, gear meshes); energy_split.* and energy.* split it"});
+                              "heat: motors (rotors; stators where rated_efficiency is given), friction (journals, "
+                              "brakes, clutch slip) and damping (couplings, belts, gear meshes); energy_split.* and "
+                              "energy.* split it"});
     result.results.push_back({"kinetic_energy_change", dKE, "J", "end minus start"});
     result.results.push_back({"potential_energy_change", dPE, "J",
                               "end minus start: gravitational plus elastic (the two lines below)"});

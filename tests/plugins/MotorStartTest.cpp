@@ -479,6 +479,31 @@ TEST(InductionMotorLosses, WithoutCurrentDataTheStatorLossFollowsTheRotorHeat) {
                 1e-9 * P);
 }
 
+// The stator-side losses add to the input without touching the mechanics:
+// the DOL bench (no current data) with and without the two keys has the
+// same rotor heat, and the electrical input exceeds the air-gap work by
+// exactly the stator heat; the balance closes with the stator heat in it.
+TEST(InductionMotorLosses, StatorHeatAddsToTheInputAndTheBalanceCloses) {
+    const std::string model = std::string(MILLDYN_SOURCE_DIR) + "/models/start_bench_dol.yaml";
+    const std::vector<Override> tight = {{"integrator.accuracy", "1e-9"}, {"outputs.plots", "false"}};
+    std::vector<Override> lossy = tight;
+    lossy.push_back({"elements.motor.rated_efficiency", "0.915"});
+    lossy.push_back({"elements.motor.no_load_loss", "450 W"});
+    const AnalysisResult plain = runModelFile(model, tight), withLosses = runModelFile(model, lossy);
+    auto value = [](const AnalysisResult& r, const std::string& name) {
+        const ResultScalar* v = r.find(name);
+        return v ? v->value : std::nan("");
+    };
+    const double rotor = value(plain, "energy.motor.rotor_heat");
+    EXPECT_NEAR(value(withLosses, "energy.motor.rotor_heat"), rotor, 1e-7 * rotor);
+    const double stator = value(withLosses, "energy.motor.stator_heat");
+    EXPECT_GT(stator, 0.0);
+    EXPECT_NEAR(value(withLosses, "energy.motor") - value(plain, "energy.motor"), stator, 1e-7 * stator);
+    EXPECT_NEAR(value(withLosses, "energy_split.motor_loss"), rotor + stator, 1e-7 * (rotor + stator));
+    EXPECT_LE(std::abs(value(withLosses, "energy_balance_relative")), 1e-8);
+    EXPECT_TRUE(std::isnan(value(plain, "energy.motor.stator_heat")));
+}
+
 // The converter's current hold: the slip speed where the circle current is
 // the limit; a limit above the breakdown current holds at breakdown; one at
 // or below the magnetising current, or a curve without current, is refused.
