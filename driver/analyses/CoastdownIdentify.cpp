@@ -10,6 +10,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "plugins/scene/Format.h"
 
 #include <cmath>
 #include <sstream>
@@ -237,8 +238,16 @@ AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& pro
     if (idleTime > 0) {
         const double McIdle = problem.identify(idleTime, Mc, tolerance);
         result.results.push_back({"idle_resistance_torque", McIdle, "N*m", "identified from idle_runout_time", shaft});
-        result.results.push_back({"millstone_torque", (Mc - McIdle) * sc.number("belt_ratio"), "N*m",
-                                  "M_zh = (Mc − Mc,idle)·u_p"});
+        // The identified torques act on `shaft` as the model gives it (seed
+        // 003's models reduce the mill side to the motor speed); M_zh is on
+        // the millstone's own shaft, u_p times slower: on `shaft` only when
+        // u_p = 1, otherwise on a shaft the model need not hold.
+        const double up = sc.number("belt_ratio");
+        result.results.push_back({"millstone_torque", (Mc - McIdle) * up, "N*m",
+                                  "M_zh = (Mc − Mc,idle)·u_p (seed 003): the grinding torque on the millstone's own "
+                                  "shaft, from the identified torques on " + shaft + " times belt_ratio u_p = " +
+                                      formatNumber(up),
+                                  up == 1 ? shaft : std::string()});
     }
     result.statistics = problem.statistics();
     result.notes.push_back(std::to_string(problem.trials()) + " coast-down simulations");

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace milldyn {
 
@@ -12,7 +14,7 @@ using Complex = std::complex<double>;
 
 DqInductionMotor::DqInductionMotor(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& shaft,
                                    const DqInductionMotorParams& p)
-    : m_forces(forces), m_shaft(shaft), m_params(p) {
+    : m_forces(forces), m_shaft(shaft), m_params(p), m_starter(p.starter) {
     auto positive = [](const char* name, double v) {
         if (!(std::isfinite(v) && v > 0))
             throw std::invalid_argument(std::string("DqInductionMotor: ") + name + " = " + std::to_string(v) +
@@ -26,6 +28,12 @@ DqInductionMotor::DqInductionMotor(const SimTK::GeneralForceSubsystem& forces, c
     positive("phase_voltage", p.phaseVoltage);
     positive("frequency", p.frequency);
     if (p.polePairs < 1) throw std::invalid_argument("DqInductionMotor: pole_pairs must be >= 1");
+    using K = StarterParams::Kind;
+    if (p.starter.kind != K::DirectOnLine && p.starter.kind != K::StarDelta && p.starter.kind != K::SoftStart)
+        throw std::invalid_argument("DqInductionMotor: starter " + Starter::kindName(p.starter.kind) +
+                                    " is not available (direct_on_line, star_delta, soft_start)");
+    if (!p.starter.switchSpeeds.empty())
+        throw std::invalid_argument("DqInductionMotor: star_delta switches by time only (switch_times)");
     m_Ls = p.statorLeakage + p.mainInductance;
     m_Lr = p.rotorLeakage + p.mainInductance;
     m_D = m_Ls * m_Lr - p.mainInductance * p.mainInductance;
@@ -53,18 +61,61 @@ Complex DqInductionMotor::calcSupplyVoltage(double t) const {
     return std::polar(std::sqrt(2.0) * m_params.phaseVoltage, 2 * M_PI * m_params.frequency * t);
 }
 
+double DqInductionMotor::calcVoltageFactor(const SimTK::State& s) const {
+    // Star–delta's torque factor 1/3 (Starter) is u² on the windings.
+    const SupplyState u =
+        isStarterFinished(s) ? m_starter.finalSupply() : m_starter.supply(s.getTime(), getStarterStep(s));
+    return u.voltage * std::sqrt(u.connection);
+}
+
+Complex DqInductionMotor::calcTerminalVoltage(const SimTK::State& s) const {
+    return calcVoltageFactor(s) * calcSupplyVoltage(s.getTime());
+}
+
+double DqInductionMotor::calcLineCurrent(const SimTK::State& s) const {
+    const double phase = std::abs(calcStatorCurrent(s)) / std::sqrt(2.0);
+    const bool delta = m_params.starter.kind == StarterParams::Kind::StarDelta && getStarterStep(s) > 0;
+    return delta ? std::sqrt(3.0) * phase : phase;
+}
+
+StartSequenceState DqInductionMotor::calcStarterProgress(const SimTK::State& s) const {
+    if (isStarterFinished(s)) {
+        StartSequenceState q;
+        q.text = Starter::kindName(m_params.starter.kind) + " starter ended (the run started from steady running)";
+        return q;
+    }
+    return m_starter.progress(s.getTime(), getStarterStep(s), 1.0, false);
+}
+
+void DqInductionMotor::finishStarter(SimTK::State& s) const {
+    SimTK::Value<bool>::updDowncast(m_forces.updDiscreteVariable(s, m_finishedIndex)) = true;
+    setStarterStep(s, m_starter.switchCount());
+}
+
+bool DqInductionMotor::isStarterFinished(const SimTK::State& s) const {
+    return SimTK::Value<bool>::downcast(m_forces.getDiscreteVariable(s, m_finishedIndex));
+}
+
+int DqInductionMotor::getStarterStep(const SimTK::State& s) const {
+    return SimTK::Value<int>::downcast(m_forces.getDiscreteVariable(s, m_stepIndex));
+}
+
+void DqInductionMotor::setStarterStep(SimTK::State& s, int step) const {
+    SimTK::Value<int>::updDowncast(m_forces.updDiscreteVariable(s, m_stepIndex)) = step;
+}
+
 double DqInductionMotor::calcTorque(const SimTK::State& s) const {
     return 1.5 * m_params.polePairs * std::imag(std::conj(getStatorFlux(s)) * calcStatorCurrent(s));
 }
 
 DqInductionMotor::Derivatives DqInductionMotor::calcFluxRates(const SimTK::State& s) const {
     const double electricalSpeed = m_params.polePairs * pinSpeed(s, m_shaft);
-    return {calcSupplyVoltage(s.getTime()) - m_params.statorResistance * calcStatorCurrent(s),
+    return {calcTerminalVoltage(s) - m_params.statorResistance * calcStatorCurrent(s),
             -m_params.rotorResistance * calcRotorCurrent(s) + Complex(0, electricalSpeed) * getRotorFlux(s)};
 }
 
 double DqInductionMotor::calcInputPower(const SimTK::State& s) const {
-    return 1.5 * std::real(calcSupplyVoltage(s.getTime()) * std::conj(calcStatorCurrent(s)));
+    return 1.5 * std::real(calcTerminalVoltage(s) * std::conj(calcStatorCurrent(s)));
 }
 
 double DqInductionMotor::calcCopperLoss(const SimTK::State& s) const {
@@ -83,7 +134,12 @@ void DqInductionMotor::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::Sp
     m_shaft.applyOneMobilityForce(s, SimTK::MobilizerUIndex(0), calcTorque(s), mobilityForces);
 }
 
-void DqInductionMotor::realizeTopology(SimTK::State& s) const { m_flux = m_forces.allocateZ(s, SimTK::Vector(4, 0.0)); }
+void DqInductionMotor::realizeTopology(SimTK::State& s) const {
+    m_flux = m_forces.allocateZ(s, SimTK::Vector(4, 0.0));
+    // A switch changes the voltage, so the step invalidates Dynamics.
+    m_stepIndex = m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<int>(0));
+    m_finishedIndex = m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<bool>(false));
+}
 
 void DqInductionMotor::realizeAcceleration(const SimTK::State& s) const {
     const Derivatives d = calcFluxRates(s);
@@ -96,6 +152,29 @@ void DqInductionMotor::realizeAcceleration(const SimTK::State& s) const {
 
 namespace {
 
+using StarterKind = StarterParams::Kind;
+const std::vector<StarterKind> kDqStarters = {StarterKind::DirectOnLine, StarterKind::StarDelta, StarterKind::SoftStart};
+
+// The keys each starter uses; giving one to another starter is an error.
+const std::vector<std::pair<std::string, std::vector<std::string>>> kDqStarterKeys = {
+    {"star_delta", {"switch_times"}},
+    {"soft_start", {"initial_voltage", "ramp_time"}},
+};
+
+void crossCheckDqInductionMotor(const ElementSpec& e) {
+    const double p = e.number("pole_pairs");
+    if (p != std::floor(p)) throw e.error("pole_pairs", "must be a whole number");
+    const std::string starter = e.text("starter");
+    for (const auto& [owner, keys] : kDqStarterKeys)
+        for (const auto& k : keys)
+            if (owner != starter && e.has(k))
+                throw e.error(k, "not used with starter " + starter + " (only with starter " + owner + ")");
+    if (starter == "star_delta" && e.numbers("switch_times").size() != 1)
+        throw e.error("starter", "star_delta switches once: give one switch_times item");
+    if (starter == "soft_start" && !(e.number("ramp_time") > 0))
+        throw e.error(e.has("ramp_time") ? "ramp_time" : "starter", "a ramp of zero length: soft_start needs ramp_time > 0");
+}
+
 void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     const SceneBody* shaft = scene.findBody(spec.text("body"));
     DqInductionMotorParams p;
@@ -107,10 +186,27 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     p.polePairs = static_cast<int>(spec.number("pole_pairs"));
     p.phaseVoltage = spec.number("phase_voltage");
     p.frequency = spec.number("frequency");
+    StarterParams& st = p.starter;
+    for (auto k : kDqStarters)
+        if (Starter::kindName(k) == spec.text("starter")) st.kind = k;
+    st.switchTimes = spec.numbers("switch_times");
+    st.initialVoltage = spec.number("initial_voltage");
+    st.rampTime = spec.number("ramp_time");
     auto* impl = new DqInductionMotor(scene.forces(), shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     const SimTK::MobilizedBody mobod = shaft->mobod;
+    const std::string starterName = Starter::kindName(st.kind);
+    for (std::size_t i = 0; i < st.switchTimes.size(); ++i) {
+        const int step = static_cast<int>(i) + 1;
+        scene.addSwitchEvent({Scene::SwitchEvent::Kind::StarterStep, st.switchTimes[i],
+                              spec.name + " " + starterName + " step " + std::to_string(step),
+                              [impl, step](SimTK::State& s) { impl->setStarterStep(s, step); }});
+    }
+    // A start cut short while the starter is still in circuit is unfinished.
+    if (st.kind != StarterKind::DirectOnLine)
+        scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); },
+                                [impl](SimTK::State& s) { impl->finishStarter(s); }});
     scene.addSpeedHint(shaft->name, 2 * M_PI * p.frequency / p.polePairs);
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::DriveTorque, SimTK::Stage::Dynamics,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
@@ -118,6 +214,12 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
                     [impl, mobod](const SimTK::State& s) { return impl->calcTorque(s) * pinSpeed(s, mobod); }});
     scene.addProbe({spec.name + ".current", "A", ProbeRole::Generic, SimTK::Stage::Dynamics,
                     [impl](const SimTK::State& s) { return std::abs(impl->calcStatorCurrent(s)) / std::sqrt(2.0); }});
+    if (st.kind != StarterParams::Kind::DirectOnLine)
+        scene.addProbe({spec.name + ".voltage", "1", ProbeRole::Generic, SimTK::Stage::Time,
+                        [impl](const SimTK::State& s) { return impl->calcVoltageFactor(s); }});
+    if (st.kind == StarterParams::Kind::StarDelta)
+        scene.addProbe({spec.name + ".line_current", "A", ProbeRole::Generic, SimTK::Stage::Dynamics,
+                        [impl](const SimTK::State& s) { return impl->calcLineCurrent(s); }});
     scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source, [impl](const SimTK::State& s) { return impl->calcInputPower(s); },
                          "electrical input of " + spec.name + " at its terminals"});
     scene.addEnergyFlow({spec.name + ".field", EnergyFlow::Kind::Source,
@@ -126,7 +228,7 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     scene.addEnergyFlow({spec.name + ".copper_heat", EnergyFlow::Kind::Dissipation,
                          [impl](const SimTK::State& s) { return impl->calcCopperLoss(s); },
                          "heat in the stator and rotor windings of " + spec.name});
-    scene.note("force " + spec.name + " (DqInductionMotor, direct on line)", "drives body " + shaft->name);
+    scene.note("force " + spec.name + " (DqInductionMotor, " + starterName + ")", "drives body " + shaft->name);
 }
 
 }  // namespace
@@ -136,7 +238,9 @@ void registerDqInductionMotor(ElementRegistry& registry) {
     ElementSchema s;
     s.type = "DqInductionMotor";
     s.doc = "Squirrel-cage induction motor as a dynamic space-phasor (dq) model with stator and rotor flux "
-            "states, started direct on line (Krause; Modelica MSL AIM_SquirrelCage).";
+            "states, started direct on line, star-delta or by a soft starter (Krause; Modelica MSL AIM_SquirrelCage).";
+    std::vector<std::string> starters;
+    for (StarterKind k : kDqStarters) starters.push_back(Starter::kindName(k));
     s.params = {
         P::body("body", "shaft the motor drives"),
         P::quantity("stator_resistance", "ohm", "Rs per phase").above(0),
@@ -145,13 +249,16 @@ void registerDqInductionMotor(ElementRegistry& registry) {
         P::quantity("rotor_leakage_inductance", "H", "Lrσ' per phase, referred to the stator").above(0),
         P::quantity("main_inductance", "H", "Lm per phase").above(0),
         P::quantity("pole_pairs", "1", "p").optional(2.0).atLeast(1).atMost(50),
-        P::quantity("phase_voltage", "V", "rms phase voltage of the equivalent star").above(0),
+        P::quantity("phase_voltage", "V", "rms voltage on a phase winding (star_delta: on the winding in delta, the line voltage)").above(0),
         P::quantity("frequency", "Hz", "supply frequency f").optional(50.0).above(0),
+        P::choice("starter", starters, "how the motor is started").optional("direct_on_line"),
+        P::quantityList("switch_times", "s", 1, 1, "star_delta: time of the switch from star to delta")
+            .optional(0.0)
+            .above(0),
+        P::quantity("initial_voltage", "1", "soft_start: initial voltage over rated").optional(0.3).above(0).atMost(1),
+        P::quantity("ramp_time", "s", "soft_start: ramp length to full voltage").optional(0.0).atLeast(0),
     };
-    s.crossCheck = [](const ElementSpec& e) {
-        const double p = e.number("pole_pairs");
-        if (p != std::floor(p)) throw e.error("pole_pairs", "must be a whole number");
-    };
+    s.crossCheck = crossCheckDqInductionMotor;
     registry.add({std::move(s), buildDqInductionMotor});
 }
 

@@ -192,6 +192,28 @@ TEST(TorqueReferral, EveryTorqueNamesItsShaftInTheSummaryAndOnScreen) {
     std::filesystem::remove_all(out);
 }
 
+// Seed 003's identification model reduces the mill side to the motor
+// speed: M_zh = (Mc − Mc,idle)·u_p is on the millstone's own shaft, which the
+// model does not hold (u_p = 3.12), so it names no body; with u_p = 1 it is
+// on the resistance's body.
+TEST(TorqueReferral, MillstoneTorqueNamesItsShaftOnlyWhereTheModelHoldsIt) {
+    const std::vector<Override> identify = {{"scenario.runout_time", "1.0 s"}, {"scenario.idle_runout_time", "1.2 s"}};
+    const AnalysisResult r = runModelFile(kModels + "burr_mill_3p2kW_identify.yaml", identify);
+    const ResultScalar* mc = r.find("resistance_torque");
+    const ResultScalar* idle = r.find("idle_resistance_torque");
+    const ResultScalar* mzh = r.find("millstone_torque");
+    ASSERT_TRUE(mc && idle && mzh);
+    EXPECT_EQ(mc->referredTo, "millstone");
+    EXPECT_EQ(idle->referredTo, "millstone");
+    EXPECT_NEAR(mzh->value, (mc->value - idle->value) * 3.12, 1e-12 * std::abs(mzh->value));
+    EXPECT_EQ(mzh->referredTo, "");
+    EXPECT_NE(mzh->doc.find("belt_ratio u_p = 3.12"), std::string::npos) << mzh->doc;
+    std::vector<Override> unit = identify;
+    unit.push_back({"scenario.belt_ratio", "1"});
+    EXPECT_EQ(runModelFile(kModels + "burr_mill_3p2kW_identify.yaml", unit).find("millstone_torque")->referredTo,
+              "millstone");
+}
+
 TEST(RunVerdict, ARunFromAGivenStateSaysWhatItDid) {
     // Braked from 1500 rpm: at rest and held by the backstop before 2.5 s.
     const AnalysisResult held = runModelFile(kModels + "start_bench_brake.yaml", {{"outputs.plots", "false"}});

@@ -63,6 +63,21 @@ bool says(const AnalysisResult& r, const std::string& text) {
     return r.verdictText.find(text) != std::string::npos;
 }
 
+// Unfinished although the speed was held: the starter was still in circuit.
+void expectUnfinishedOnTheStarter(const AnalysisResult& r, const std::string& text) {
+    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
+    EXPECT_TRUE(says(r, text)) << r.verdictText;
+    expectHeldOnTheStarter(r);
+    expectNoStartValues(r);
+}
+
+// Stalled with the sequence waiting on the shaft.
+void expectStalledOnTheStarter(const AnalysisResult& r, const std::string& text) {
+    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
+    EXPECT_TRUE(says(r, text)) << r.verdictText;
+    expectNoStartValues(r);
+}
+
 // The measured defect: the 3 m x 4 m mill on its liquid-resistance starter
 // (shorted over 20 s) holds 1.626 rad/s (84 % of running) at 8 s.
 TEST(StarterVerdict, LiquidResistanceCutShortOnItsPlateauIsUnfinished) {
@@ -91,19 +106,13 @@ TEST(StarterVerdict, LiquidResistanceRunPastItsRampCompletesAndSaysSo) {
 TEST(StarterVerdict, SoftStartHeldOnItsRampIsUnfinished) {
     const AnalysisResult r = runModelFile(
         benchModel("soft", "    starter: soft_start\n    initial_voltage: 0.85\n    ramp_time: 10 s\n", 3), {});
-    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
-    EXPECT_TRUE(says(r, "soft start at V = 0.895 of rated, 30 % of its 10 s ramp")) << r.verdictText;
-    expectHeldOnTheStarter(r);
-    expectNoStartValues(r);
+    expectUnfinishedOnTheStarter(r, "soft start at V = 0.895 of rated, 30 % of its 10 s ramp");
 }
 
 TEST(StarterVerdict, StarDeltaStillInStarIsUnfinished) {
     const AnalysisResult r =
         runModelFile(benchModel("star_time", "    starter: star_delta\n    switch_times: [25 s]\n", 20), {});
-    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
-    EXPECT_TRUE(says(r, "still in star (torque / 3); it switches at 25 s")) << r.verdictText;
-    expectHeldOnTheStarter(r);
-    expectNoStartValues(r);
+    expectUnfinishedOnTheStarter(r, "still in star (torque / 3); it switches at 25 s");
 }
 
 // In star this Kloss motor gives a third of 46.2 N*m at standstill: it
@@ -113,9 +122,7 @@ TEST(StarterVerdict, StarDeltaStillInStarIsUnfinished) {
 TEST(StarterVerdict, StarDeltaWaitingForASpeedNeverReachedIsAStall) {
     const AnalysisResult r =
         runModelFile(benchModel("star_speed", "    starter: star_delta\n    switch_speeds: [160 rad/s]\n", 20), {});
-    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
-    EXPECT_TRUE(says(r, "waits for the shaft to reach 160 rad/s")) << r.verdictText;
-    expectNoStartValues(r);
+    expectStalledOnTheStarter(r, "waits for the shaft to reach 160 rad/s");
 }
 
 TEST(StarterVerdict, StarDeltaSwitchedCompletes) {
@@ -130,11 +137,7 @@ TEST(StarterVerdict, RotorResistanceStepStillInCircuitIsUnfinished) {
         benchModel("steps_time", "    starter: rotor_resistance\n    resistance_ratios: [3]\n    switch_times: [5 s]\n",
                    3),
         {});
-    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
-    EXPECT_TRUE(says(r, "rotor-resistance starter in step 1 of 1 (R/R_rotor = 3); it switches at 5 s"))
-        << r.verdictText;
-    expectHeldOnTheStarter(r);
-    expectNoStartValues(r);
+    expectUnfinishedOnTheStarter(r, "rotor-resistance starter in step 1 of 1 (R/R_rotor = 3); it switches at 5 s");
 }
 
 TEST(StarterVerdict, RotorResistanceWaitingForASpeedNeverReachedIsAStall) {
@@ -142,9 +145,7 @@ TEST(StarterVerdict, RotorResistanceWaitingForASpeedNeverReachedIsAStall) {
         benchModel("steps_speed",
                    "    starter: rotor_resistance\n    resistance_ratios: [3]\n    switch_speeds: [160 rad/s]\n", 3),
         {});
-    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
-    EXPECT_TRUE(says(r, "waits for the shaft to reach 160 rad/s")) << r.verdictText;
-    expectNoStartValues(r);
+    expectStalledOnTheStarter(r, "waits for the shaft to reach 160 rad/s");
 }
 
 // A converter whose ramp `lines` hold at the torque `holdTorque` [N*m],
@@ -211,10 +212,7 @@ std::string clutchModel(const std::string& name, double engageTime, double capac
 
 TEST(StarterVerdict, ClutchStillEngagingIsUnfinished) {
     const AnalysisResult r = runModelFile(clutchModel("clutch_engaging", 5, 150, 0, 3), {});
-    EXPECT_EQ(r.verdict, "unfinished") << r.verdictText;
-    EXPECT_TRUE(says(r, "clutch: clutch engaging: capacity 0 % of 150 N*m, full at 5.5 s")) << r.verdictText;
-    expectHeldOnTheStarter(r);
-    expectNoStartValues(r);
+    expectUnfinishedOnTheStarter(r, "clutch: clutch engaging: capacity 0 % of 150 N*m, full at 5.5 s");
 }
 
 // The motor runs up alone (about 2.5 s), then a 60 N*m clutch engages from
@@ -224,9 +222,7 @@ TEST(StarterVerdict, ClutchStillEngagingIsUnfinished) {
 // the run-up.)
 TEST(StarterVerdict, ClutchEngagedButSlippingIsAStall) {
     const AnalysisResult r = runModelFile(clutchModel("clutch_slipping", 3.5, 60, 80, 10), {});
-    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
-    EXPECT_TRUE(says(r, "clutch fully engaged but slipping")) << r.verdictText;
-    expectNoStartValues(r);
+    expectStalledOnTheStarter(r, "clutch fully engaged but slipping");
 }
 
 TEST(StarterVerdict, ClutchEngagedAndLockedCompletes) {

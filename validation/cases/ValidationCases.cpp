@@ -49,7 +49,8 @@ void addValidationCaseGroup(CaseGroup group) {
 std::vector<ValidationRow> runValidationCases(const std::string& filter) {
     std::vector<CaseGroup> groups = {CaseGroup(burrMillCases), CaseGroup(rollCrusherCases),
                                      CaseGroup(planetaryGearCases), CaseGroup(planetaryBeltCases),
-                                     CaseGroup(beadMillCases), CaseGroup(tumblingMillCases), CaseGroup(startCases), CaseGroup(machineStartCases)};
+                                     CaseGroup(beadMillCases), CaseGroup(tumblingMillCases), CaseGroup(startCases), CaseGroup(dqStartCases),
+                                     CaseGroup(machineStartCases)};
     {
         const std::lock_guard<std::mutex> lock(g_pluginGroupsMutex);
         groups.insert(groups.end(), pluginGroups().begin(), pluginGroups().end());

@@ -61,6 +61,10 @@ std::vector<ValidationRow> planetaryBeltCases(const std::string& filter);
 std::vector<ValidationRow> beadMillCases(const std::string& filter);
 std::vector<ValidationRow> tumblingMillCases(const std::string& filter);
 std::vector<ValidationRow> startCases(const std::string& filter);
+/// The dynamic (dq) induction machine against an independent transient
+/// oracle and its starters against the equivalent circuit
+/// (validation/cases/DqStartCases.cpp).
+std::vector<ValidationRow> dqStartCases(const std::string& filter);
 /// Whole machines started by their motor: seed 000's planetary mill through
 /// a slipping V-belt, the burr mill started loaded
 /// (validation/cases/MachineStartCases.cpp).

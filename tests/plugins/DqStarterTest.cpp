@@ -1,0 +1,165 @@
+// The dq machine's starters: the winding voltage factor and the line
+// current in each step, by hand, and bad starter input as one located line.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "driver/ModelFile.h"
+#include "driver/analyses/Analysis.h"
+#include "plugins/motors/DqInductionMotor.h"
+#include "tests/plugins/ShaftFixture.h"
+
+namespace milldyn {
+namespace {
+
+DqInductionMotorParams benchParams() {
+    DqInductionMotorParams p;
+    p.statorResistance = 0.03;
+    p.rotorResistance = 0.04;
+    p.statorLeakage = 3e-4;
+    p.rotorLeakage = 3e-4;
+    p.mainInductance = 9e-3;
+    p.polePairs = 2;
+    p.phaseVoltage = 100;
+    p.frequency = 50;
+    return p;
+}
+
+TEST(DqStarter, StarDeltaWindingVoltageAndLineCurrentByStep) {
+    DqInductionMotorParams p = benchParams();
+    p.starter.kind = StarterParams::Kind::StarDelta;
+    p.starter.switchTimes = {1.0};
+    test::ShaftSystem sys;
+    auto shaft = sys.addShaft(1.0);
+    auto* m = new DqInductionMotor(sys.forces(), shaft, p);
+    SimTK::Force::Custom force(sys.forces(), m);
+    SimTK::State s = sys.defaultState();
+    s.updZ()[0] = 1.0;  // ψs = 1 Wb: a phase current (Lr/D)/√2
+    sys.system().realize(s, SimTK::Stage::Dynamics);
+    // In star each winding has 1/√3 of its delta voltage.
+    EXPECT_NEAR(m->calcVoltageFactor(s), 1 / std::sqrt(3.0), 1e-15);
+    EXPECT_NEAR(std::abs(m->calcTerminalVoltage(s)), std::sqrt(2.0) * 100 / std::sqrt(3.0), 1e-12);
+    const double phase = std::abs(m->calcStatorCurrent(s)) / std::sqrt(2.0);
+    EXPECT_NEAR(m->calcLineCurrent(s), phase, 1e-12);  // star: line = winding current
+    m->setStarterStep(s, 1);
+    sys.system().realize(s, SimTK::Stage::Dynamics);
+    EXPECT_DOUBLE_EQ(m->calcVoltageFactor(s), 1.0);
+    EXPECT_NEAR(m->calcLineCurrent(s), std::sqrt(3.0) * phase, 1e-12);  // delta: √3 × winding current
+}
+
+TEST(DqStarter, SoftStartRampsTheVoltage) {
+    DqInductionMotorParams p = benchParams();
+    p.starter.kind = StarterParams::Kind::SoftStart;
+    p.starter.initialVoltage = 0.4;
+    p.starter.rampTime = 2.0;
+    test::ShaftSystem sys;
+    auto shaft = sys.addShaft(1.0);
+    auto* m = new DqInductionMotor(sys.forces(), shaft, p);
+    SimTK::Force::Custom force(sys.forces(), m);
+    SimTK::State s = sys.defaultState();
+    for (double t : {0.0, 0.5, 2.0, 3.0}) {
+        s.updTime() = t;
+        sys.system().realize(s, SimTK::Stage::Time);
+        EXPECT_NEAR(m->calcVoltageFactor(s), 0.4 + 0.6 * std::min(t / 2.0, 1.0), 1e-15) << t;
+    }
+    p.starter.kind = StarterParams::Kind::FrequencyConverter;
+    EXPECT_THROW(DqInductionMotor(sys.forces(), shaft, p), std::invalid_argument);
+}
+
+std::string errorOf(const std::string& keys) {
+    const std::string text =
+        "format_version: 1\nname: t\nbodies:\n  - name: shaft\n    inertia: 1 kg*m^2\n"
+        "    joint: {type: pin, parent: ground}\nelements:\n  - type: DqInductionMotor\n    name: motor\n    body: shaft\n"
+        "    stator_resistance: 0.03 ohm\n    rotor_resistance: 0.04 ohm\n    stator_leakage_inductance: 0.3 mH\n"
+        "    rotor_leakage_inductance: 0.3 mH\n    main_inductance: 9 mH\n    phase_voltage: 100 V\n" +
+        keys + "scenario:\n  analysis: transient\n  end_time: 1 s\n";
+    try {
+        readModelText(text, "m.yaml", defaultModelReader());
+    } catch (const SpecError& e) {
+        return e.formatted();
+    }
+    return std::string();
+}
+
+TEST(DqStarter, BadStarterInputGivesOneLocatedLine) {
+    EXPECT_EQ(errorOf("    starter: star_delta\n    switch_times: [1 s]\n"), "");
+    EXPECT_EQ(errorOf("    starter: soft_start\n    initial_voltage: 0.4\n    ramp_time: 2 s\n"), "");
+    const std::string noSwitch = errorOf("    starter: star_delta\n");
+    EXPECT_NE(noSwitch.find("m.yaml:17:14: error: motor.starter: star_delta switches once"), std::string::npos) << noSwitch;
+    const std::string zeroRamp = errorOf("    starter: soft_start\n    ramp_time: 0 s\n");
+    EXPECT_NE(zeroRamp.find("m.yaml:18:16: error: motor.ramp_time: a ramp of zero length"), std::string::npos) << zeroRamp;
+    const std::string noRamp = errorOf("    starter: soft_start\n");
+    EXPECT_NE(noRamp.find("error: motor.starter: a ramp of zero length"), std::string::npos) << noRamp;
+    const std::string before = errorOf("    starter: star_delta\n    switch_times: [-1 s]\n");
+    EXPECT_EQ(before.rfind("m.yaml:18:", 0), 0u) << before;
+    EXPECT_NE(before.find("error: motor.switch_times"), std::string::npos) << before;
+    const std::string other = errorOf("    switch_times: [1 s]\n");
+    EXPECT_NE(other.find("error: motor.switch_times: not used with starter direct_on_line (only with starter star_delta)"),
+              std::string::npos)
+        << other;
+    const std::string converter = errorOf("    starter: frequency_converter\n");
+    EXPECT_NE(converter.find("m.yaml:17:14: error: motor.starter:"), std::string::npos) << converter;
+    const std::string two = errorOf("    starter: star_delta\n    switch_times: [1 s, 2 s]\n");
+    EXPECT_NE(two.find("error: motor.switch_times:"), std::string::npos) << two;
+    for (const std::string& e : {noSwitch, zeroRamp, noRamp, before, other, converter, two})
+        EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 0) << e;
+}
+
+}  // namespace
+}  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+// A start cut short while the dq machine's starter is still in circuit:
+// the unloaded shaft runs at (almost) synchronous speed in star, or on the
+// soft start's ramp, so the speed alone would call the start completed.
+TEST(DqStarter, StartCutShortOnTheStarterIsUnfinished) {
+    const std::string models = std::string(MILLDYN_SOURCE_DIR) + "/models/";
+    const AnalysisResult star = runModelFile(models + "start_bench_dq_star_delta.yaml",
+                                             {{"elements.motor.switch_times", "[8 s]"}, {"scenario.end_time", "6 s"}});
+    EXPECT_EQ(star.verdict, "unfinished") << star.verdictText;
+    EXPECT_NE(star.verdictText.find("held within"), std::string::npos) << star.verdictText;
+    EXPECT_NE(star.verdictText.find("still in star"), std::string::npos) << star.verdictText;
+    EXPECT_EQ(star.find("start_time"), nullptr);
+    const AnalysisResult soft = runModelFile(models + "start_bench_dq_soft_start.yaml",
+                                             {{"elements.motor.ramp_time", "10 s"}, {"scenario.end_time", "6 s"}});
+    EXPECT_EQ(soft.verdict, "unfinished") << soft.verdictText;
+    EXPECT_NE(soft.verdictText.find("held within"), std::string::npos) << soft.verdictText;
+    EXPECT_NE(soft.verdictText.find("soft start at V = "), std::string::npos) << soft.verdictText;
+    // As shipped both finish their sequence and complete.
+    for (const char* bench : {"start_bench_dq_star_delta.yaml", "start_bench_dq_soft_start.yaml"}) {
+        const AnalysisResult r = runModelFile(models + bench, {});
+        EXPECT_EQ(r.verdict, "completed") << bench << ": " << r.verdictText;
+    }
+}
+
+}  // namespace
+}  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+// Steady running is the machine after its start (solveSteadyState finishes
+// every starting sequence): from the solved steady speed a star–delta or
+// soft-started dq machine runs in delta / at full voltage at once.
+TEST(DqStarter, SteadyRunningIsAfterTheStart) {
+    const std::string models = std::string(MILLDYN_SOURCE_DIR) + "/models/";
+    for (const char* bench : {"start_bench_dq_star_delta.yaml", "start_bench_dq_soft_start.yaml"}) {
+        const AnalysisResult r = runModelFile(models + bench, {{"scenario.initial_state", "steady"}, {"scenario.end_time", "0.5 s"}});
+        EXPECT_EQ(r.verdict, "steady_held") << bench << ": " << r.verdictText;
+        EXPECT_DOUBLE_EQ(r.value(0, "motor.voltage"), 1.0) << bench;
+        EXPECT_DOUBLE_EQ(r.value(r.rows.size() - 1, "motor.voltage"), 1.0) << bench;
+        if (r.findColumn("motor.line_current") != std::string::npos) {  // star–delta: in delta, line = √3 × winding
+            const std::size_t last = r.rows.size() - 1;
+            EXPECT_NEAR(r.value(last, "motor.line_current"), std::sqrt(3.0) * r.value(last, "motor.current"),
+                        1e-9 * r.value(last, "motor.current"));
+        }
+    }
+}
+
+}  // namespace
+}  // namespace milldyn
