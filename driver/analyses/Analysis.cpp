@@ -406,11 +406,13 @@ void addEnergyBalance(const Scene& scene, const SimTK::State& start, const SimTK
                                    system.calcKineticEnergy(start), system.calcKineticEnergy(end),
                                    std::numeric_limits<double>::min()});
     result.results.push_back({"energy_from_sources", sources, "J",
-                              "work of the drives (a motor's air-gap power, a prescribed drive's work)"});
+                              "work of the drives (a motor's electrical input, or its air-gap power without "
+                              "rated_efficiency; a prescribed drive's work)"});
     result.results.push_back({"energy_to_loads", loads, "J", "work taken by the loads (grinding, crushing)"});
     result.results.push_back({"energy_dissipated", dissipated, "J",
-                              "heat: motor rotors, friction (journals, brakes, clutch slip) and damping "
-                              "(couplings, belts, gear meshes); energy_split.* and energy.* split it"});
+                              "heat: motors (rotors; stators where rated_efficiency is given), friction (journals, "
+                              "brakes, clutch slip) and damping (couplings, belts, gear meshes); energy_split.* and "
+                              "energy.* split it"});
     result.results.push_back({"kinetic_energy_change", dKE, "J", "end minus start"});
     result.results.push_back({"potential_energy_change", dPE, "J",
                               "end minus start: gravitational plus elastic (the two lines below)"});

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -19,14 +20,50 @@ InductionMotor::InductionMotor(const SimTK::GeneralForceSubsystem& forces,
     : m_forces(forces), m_shaft(shaft), m_params(p), m_curve(p), m_starter(p.starter) {
     if (std::isnan(p.switchOffTime))
         throw std::invalid_argument("InductionMotor: switch_off_time is NaN");
-    if (isConverter()) m_holdSlipSpeed = calcHoldSlipSpeed(m_curve, p.starter.torqueLimit);
+    if (isConverter()) {
+        m_holdSlipSpeed = calcHoldSlipSpeed(m_curve, p.starter.torqueLimit);
+        if (std::isfinite(p.starter.currentLimit)) {
+            const double currentHold = calcCurrentHoldSlipSpeed(m_curve, p.starter.currentLimit);
+            m_holdByCurrent = currentHold < m_holdSlipSpeed;
+            m_holdSlipSpeed = std::min(m_holdSlipSpeed, currentHold);
+        }
+    }
+    m_ratedCurrent = m_curve.current(p.ratedSpeed);
+    if (p.ratedEfficiency != 0) {
+        if (!(p.ratedEfficiency > 0 && p.ratedEfficiency < 1))
+            throw std::invalid_argument("InductionMotor: rated_efficiency must lie in (0, 1)");
+        if (!(std::isfinite(p.noLoadLoss) && p.noLoadLoss >= 0))
+            throw std::invalid_argument("InductionMotor: no_load_loss must be finite and >= 0");
+        m_statorCopperRated = calcRatedStatorCopperLoss(p, p.ratedEfficiency, p.noLoadLoss);
+        if (!(m_statorCopperRated > 0))
+            throw std::invalid_argument("InductionMotor: rated_efficiency: " +
+                                        describeRatedLosses(p, p.ratedEfficiency, p.noLoadLoss));
+    }
 }
 
-double calcHoldSlipSpeed(const TorqueSpeedCurve& curve, double torqueLimit) {
+double calcRatedStatorCopperLoss(const TorqueSpeedCurveParams& p, double ratedEfficiency, double noLoadLoss) {
+    return p.ratedTorque * p.ratedSpeed / ratedEfficiency - p.ratedTorque * p.synchronousSpeed - noLoadLoss;
+}
+
+std::string describeRatedLosses(const TorqueSpeedCurveParams& p, double ratedEfficiency, double noLoadLoss) {
+    const double Pn = p.ratedTorque * p.ratedSpeed, Pin = Pn / ratedEfficiency;
+    const double Pag = p.ratedTorque * p.synchronousSpeed;
+    return "no stator copper loss is left at the rated point: P_in,n = P_n/η_n = " + formatNumber(Pn) + " W / " +
+           formatNumber(ratedEfficiency) + " = " + formatNumber(Pin) + " W, less the air-gap power Mn·ωc = " +
+           formatNumber(Pag) + " W (rotor copper loss " + formatNumber(Pag - Pn) + " W) and the no-load loss " +
+           formatNumber(noLoadLoss) + " W, leaves P_Cu1,n = " + formatNumber(Pin - Pag - noLoadLoss) +
+           " W (must be > 0: the efficiency or the no-load loss is too high for this rated slip)";
+}
+
+namespace {
+
+/// The slip speed on the stable branch (synchronous to breakdown) at which
+/// an increasing function of the slip speed reaches `limit`, by bisection;
+/// the breakdown slip speed if it stays below there, 0 if above at 0.
+double bisectStableBranch(const TorqueSpeedCurve& curve, const std::function<double(double)>& valueAt, double limit) {
     using Law = TorqueSpeedCurveParams::Law;
     const TorqueSpeedCurveParams& p = curve.params();
     const double wc = p.synchronousSpeed;
-    // The stable branch runs from synchronous speed to the breakdown point.
     double slipSpeedBreakdown = wc;  // linear law: torque rises with slip all the way
     if (p.law == Law::Kloss || p.law == Law::KlossModified) {
         slipSpeedBreakdown = curve.breakdownSlip() * wc;
@@ -35,16 +72,35 @@ double calcHoldSlipSpeed(const TorqueSpeedCurve& curve, double torqueLimit) {
         const auto k = static_cast<std::size_t>(std::max_element(T.begin(), T.end()) - T.begin());
         slipSpeedBreakdown = wc - curve.pointSpeeds()[k];
     }
-    auto torqueAt = [&](double slipSpeed) { return curve.torque(wc - slipSpeed); };
-    if (!(torqueAt(slipSpeedBreakdown) > torqueLimit)) return slipSpeedBreakdown;
-    if (!(torqueAt(0) < torqueLimit)) return 0;
-    double lo = 0, hi = slipSpeedBreakdown;  // torque(lo) < limit < torque(hi)
+    if (!(valueAt(slipSpeedBreakdown) > limit)) return slipSpeedBreakdown;
+    if (!(valueAt(0) < limit)) return 0;
+    double lo = 0, hi = slipSpeedBreakdown;  // value(lo) < limit < value(hi)
     for (int i = 0; i < 200; ++i) {
         const double mid = 0.5 * (lo + hi);
         if (mid <= lo || mid >= hi) break;
-        (torqueAt(mid) < torqueLimit ? lo : hi) = mid;
+        (valueAt(mid) < limit ? lo : hi) = mid;
     }
     return lo;
+}
+
+}  // namespace
+
+double calcHoldSlipSpeed(const TorqueSpeedCurve& curve, double torqueLimit) {
+    const double wc = curve.params().synchronousSpeed;
+    return bisectStableBranch(curve, [&](double slipSpeed) { return curve.torque(wc - slipSpeed); }, torqueLimit);
+}
+
+double calcCurrentHoldSlipSpeed(const TorqueSpeedCurve& curve, double currentLimit) {
+    const double wc = curve.params().synchronousSpeed;
+    if (!curve.hasCurrent())
+        throw std::invalid_argument("InductionMotor: current_limit needs the motor's current data (rated_current, "
+                                    "rated_power_factor and locked_rotor_current_ratio, or a table's curve_currents)");
+    const double noLoad = curve.current(wc);
+    if (!(currentLimit > noLoad))
+        throw std::invalid_argument("InductionMotor: current_limit = " + formatNumber(currentLimit) +
+                                    " A is not above the no-load (magnetising) current " + formatNumber(noLoad) +
+                                    " A: the motor cannot run at all within it");
+    return bisectStableBranch(curve, [&](double slipSpeed) { return curve.current(wc - slipSpeed); }, currentLimit);
 }
 
 double InductionMotor::torqueAtSpeed(double omega, const SupplyState& u) const {
@@ -102,6 +158,47 @@ double InductionMotor::setRampHold(SimTK::State& state, double held) const {
     return 1;
 }
 
+double InductionMotor::airGapPowerAtSpeed(double omega, const SupplyState& u) const {
+    return torqueAtSpeed(omega, u) * u.frequency * m_params.synchronousSpeed;
+}
+
+double InductionMotor::statorCopperLossAtSpeed(double omega, const SupplyState& u) const {
+    if (!hasLosses()) return 0;
+    const double wc = m_params.synchronousSpeed;
+    const double slipSpeed = u.frequency * wc - omega;
+    if (m_curve.hasCurrent()) {
+        // The phase current over its rated value: k·V·I_nat is the line
+        // current, and in star (k = 1/3) the phase current is √k of delta's.
+        const double phase = u.voltage * m_curve.current(wc - slipSpeed / u.resistance) / m_ratedCurrent;
+        return m_statorCopperRated * u.connection * phase * phase;
+    }
+    // No current data: I1 ≈ I2', so P_Cu1 ∝ the heat in the rotor's own resistance.
+    const double rotorOwnHeat = torqueAtSpeed(omega, u) * slipSpeed / u.resistance;
+    return m_statorCopperRated * rotorOwnHeat / (m_params.ratedTorque * (wc - m_params.ratedSpeed));
+}
+
+double InductionMotor::noLoadLossAt(const SupplyState& u) const {
+    if (!hasLosses()) return 0;
+    // Terminal voltage over rated: V (the flux ratio) times f under V/f.
+    const double terminal = u.voltage * u.frequency;
+    return m_params.noLoadLoss * u.connection * terminal * terminal;
+}
+
+double InductionMotor::electricalPowerAtSpeed(double omega, const SupplyState& u) const {
+    return airGapPowerAtSpeed(omega, u) + statorCopperLossAtSpeed(omega, u) + noLoadLossAt(u);
+}
+
+double InductionMotor::calcStatorLoss(const SimTK::State& state) const {
+    if (!isOn(state) || !hasLosses()) return 0;
+    const SupplyState u = supply(state);
+    return statorCopperLossAtSpeed(m_shaft.getOneU(state, SimTK::MobilizerUIndex(0)), u) + noLoadLossAt(u);
+}
+
+double InductionMotor::calcElectricalPower(const SimTK::State& state) const {
+    if (!isOn(state)) return 0;
+    return electricalPowerAtSpeed(m_shaft.getOneU(state, SimTK::MobilizerUIndex(0)), supply(state));
+}
+
 double InductionMotor::calcSlipSpeed(const SimTK::State& state) const {
     return supply(state).frequency * m_params.synchronousSpeed - m_shaft.getOneU(state, SimTK::MobilizerUIndex(0));
 }
@@ -118,7 +215,7 @@ StartSequenceState InductionMotor::calcStarterProgress(const SimTK::State& state
         if (!isConverter() || converterFrequency(state) >= 1) return q;
     }
     return m_starter.progress(state.getTime(), getStarterStep(state), isConverter() ? converterFrequency(state) : 1.0,
-                              isRampHeld(state));
+                              isRampHeld(state), m_holdByCurrent);
 }
 
 void InductionMotor::finishStarter(SimTK::State& state) const {
@@ -205,7 +302,7 @@ const std::map<std::string, std::vector<std::string>> kLawKeys = {
 const std::map<std::string, std::vector<std::string>> kStarterKeys = {
     {"star_delta", {"switch_times", "switch_speeds"}},
     {"soft_start", {"initial_voltage", "ramp_time"}},
-    {"frequency_converter", {"initial_frequency", "ramp_time", "torque_limit"}},
+    {"frequency_converter", {"initial_frequency", "ramp_time", "torque_limit", "current_limit"}},
     {"rotor_resistance", {"switch_times", "switch_speeds", "resistance_ratios"}},
     {"liquid_resistance", {"initial_resistance_ratio", "ramp_time"}},
 };
@@ -234,6 +331,43 @@ void checkIncreasing(const ElementSpec& e, const std::string& key, const std::st
         if (!(v[i] > v[i - 1]))
             throw e.error(key, what + " must increase strictly: item " + std::to_string(i + 1) + " (" + num(v[i]) +
                                    ") is not above item " + std::to_string(i) + " (" + num(v[i - 1]) + ")");
+}
+
+InductionMotorParams motorParamsOf(const ElementSpec& spec) {
+    InductionMotorParams p;
+    p.law = lawOf(spec.text("law"));
+    p.ratedTorque = spec.number("rated_torque");
+    p.ratedSpeed = spec.number("rated_speed");
+    p.synchronousSpeed = spec.number("synchronous_speed");
+    p.breakdownRatio = spec.number("breakdown_ratio");
+    p.linearStallTorque = spec.number("linear_stall_torque");
+    p.linearSlope = spec.number("linear_slope");
+    p.lockedRotorRatio = spec.number("locked_rotor_ratio");
+    p.pullUpRatio = spec.number("pull_up_ratio");
+    p.pullUpSpeed = spec.number("pull_up_speed");
+    p.breakdownSpeed = spec.number("breakdown_speed");
+    p.tableSpeeds = spec.numbers("curve_speeds");
+    p.tableTorques = spec.numbers("curve_torques");
+    p.tableCurrents = spec.numbers("curve_currents");
+    p.ratedCurrent = spec.number("rated_current");
+    p.ratedPowerFactor = spec.number("rated_power_factor");
+    p.lockedRotorCurrentRatio = spec.number("locked_rotor_current_ratio");
+    p.switchOffTime = spec.number("switch_off_time");
+    p.ratedEfficiency = spec.number("rated_efficiency");
+    p.noLoadLoss = spec.number("no_load_loss");
+    StarterParams& st = p.starter;
+    st.kind = starterOf(spec.text("starter"));
+    st.switchTimes = spec.numbers("switch_times");
+    st.switchSpeeds = spec.numbers("switch_speeds");
+    st.resistanceRatios = spec.numbers("resistance_ratios");
+    st.initialVoltage = spec.number("initial_voltage");
+    st.initialFrequency = spec.number("initial_frequency");
+    st.initialResistanceRatio = spec.number("initial_resistance_ratio");
+    st.rampTime = spec.number("ramp_time");
+    st.torqueLimit = spec.number("torque_limit");
+    st.currentLimit = spec.number("current_limit");
+
+    return p;
 }
 
 void crossCheckInductionMotor(const ElementSpec& e) {
@@ -338,40 +472,31 @@ void crossCheckInductionMotor(const ElementSpec& e) {
         !(e.number("ramp_time") > 0))
         throw e.error(e.has("ramp_time") ? "ramp_time" : "starter",
                       "a ramp of zero length: " + starter + " needs ramp_time > 0");
+    if (e.has("rated_efficiency") != e.has("no_load_loss"))
+        throw e.error(e.has("rated_efficiency") ? "rated_efficiency" : "no_load_loss",
+                      "give rated_efficiency and no_load_loss together (the no-load test's loss splits the rated "
+                      "losses into those that scale with the current and those that do not; state 0 W if unknown)");
+    const InductionMotorParams p = motorParamsOf(e);
+    if (e.has("rated_efficiency") && !(calcRatedStatorCopperLoss(p, p.ratedEfficiency, p.noLoadLoss) > 0))
+        throw e.error("rated_efficiency", describeRatedLosses(p, p.ratedEfficiency, p.noLoadLoss));
+    if (e.has("current_limit")) {
+        if (!e.has("rated_current") && !e.has("curve_currents"))
+            throw e.error("current_limit", "a current limit needs the motor's current data (rated_current, "
+                                           "rated_power_factor and locked_rotor_current_ratio, or a table's "
+                                           "curve_currents)");
+        try {
+            calcCurrentHoldSlipSpeed(TorqueSpeedCurve(p), p.starter.currentLimit);
+        } catch (const std::invalid_argument& x) {
+            const std::string why = x.what(), prefix = "InductionMotor: ";
+            throw e.error("current_limit", why.rfind(prefix, 0) == 0 ? why.substr(prefix.size()) : why);
+        }
+    }
 }
 
 void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     const SceneBody* shaft = scene.findBody(spec.text("body"));
-    InductionMotorParams p;
-    p.law = lawOf(spec.text("law"));
-    p.ratedTorque = spec.number("rated_torque");
-    p.ratedSpeed = spec.number("rated_speed");
-    p.synchronousSpeed = spec.number("synchronous_speed");
-    p.breakdownRatio = spec.number("breakdown_ratio");
-    p.linearStallTorque = spec.number("linear_stall_torque");
-    p.linearSlope = spec.number("linear_slope");
-    p.lockedRotorRatio = spec.number("locked_rotor_ratio");
-    p.pullUpRatio = spec.number("pull_up_ratio");
-    p.pullUpSpeed = spec.number("pull_up_speed");
-    p.breakdownSpeed = spec.number("breakdown_speed");
-    p.tableSpeeds = spec.numbers("curve_speeds");
-    p.tableTorques = spec.numbers("curve_torques");
-    p.tableCurrents = spec.numbers("curve_currents");
-    p.ratedCurrent = spec.number("rated_current");
-    p.ratedPowerFactor = spec.number("rated_power_factor");
-    p.lockedRotorCurrentRatio = spec.number("locked_rotor_current_ratio");
-    p.switchOffTime = spec.number("switch_off_time");
-    StarterParams& st = p.starter;
-    st.kind = starterOf(spec.text("starter"));
-    st.switchTimes = spec.numbers("switch_times");
-    st.switchSpeeds = spec.numbers("switch_speeds");
-    st.resistanceRatios = spec.numbers("resistance_ratios");
-    st.initialVoltage = spec.number("initial_voltage");
-    st.initialFrequency = spec.number("initial_frequency");
-    st.initialResistanceRatio = spec.number("initial_resistance_ratio");
-    st.rampTime = spec.number("ramp_time");
-    st.torqueLimit = spec.number("torque_limit");
-
+    const InductionMotorParams p = motorParamsOf(spec);
+    const StarterParams& st = p.starter;
     auto* impl = new InductionMotor(scene.forces(), shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);  // Simbody owns impl
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
@@ -417,9 +542,15 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
                         [impl](const SimTK::State& s) { return impl->supply(s).frequency; }});
         const double wc = p.synchronousSpeed;
         scene.addDerivedValue({spec.name + ".hold_slip", impl->holdSlipSpeed() / wc, "1",
-                               "converter: slip at which the ramp holds, natural torque = min(torque_limit, breakdown)"});
+                               impl->holdsAtCurrentLimit()
+                                   ? "converter: slip at which the ramp holds, natural current = current_limit"
+                                   : "converter: slip at which the ramp holds, natural torque = min(torque_limit, "
+                                     "breakdown)"});
         scene.addDerivedValue({spec.name + ".hold_torque", impl->torqueAtSpeed(wc - impl->holdSlipSpeed()), "N*m",
                                "converter: the torque the ramp holds at"});
+        if (impl->curve().hasCurrent())
+            scene.addDerivedValue({spec.name + ".hold_current", impl->curve().current(wc - impl->holdSlipSpeed()), "A",
+                                   "converter: the line current the ramp holds at"});
     }
     // Slightly below synchronous: where every motor law has its stable branch.
     scene.addSpeedHint(shaft->name, p.ratedSpeed);
@@ -446,12 +577,43 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
         scene.addDerivedValue({spec.name + ".circle_locked_rotor_torque_ratio", circle->calcLockedRotorTorqueRatio(), "1",
                                "circle diagram's own M(1)/Mn (constant R2'); the torque law's is locked_rotor_ratio"});
     }
-    const double wc = p.synchronousSpeed;
-    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source,
-                         [impl, wc](const SimTK::State& s) {
-                             return impl->calcTorque(s) * impl->supply(s).frequency * wc;
-                         },
-                         "air-gap power of " + spec.name + " (electrical input less stator losses, not modelled)"});
+    if (impl->hasLosses()) {
+        scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source,
+                             [impl](const SimTK::State& s) { return impl->calcElectricalPower(s); },
+                             "electrical input of " + spec.name +
+                                 ": air-gap power + stator copper loss + no-load loss (from rated_efficiency)"});
+        scene.addEnergyFlow({spec.name + ".stator_heat", EnergyFlow::Kind::Dissipation,
+                             [impl](const SimTK::State& s) { return impl->calcStatorLoss(s); },
+                             "heat in the stator of " + spec.name +
+                                 ": stator copper loss + no-load loss (iron, friction, windage)"});
+        scene.addProbe({spec.name + ".electrical_power", "W", ProbeRole::Generic, SimTK::Stage::Dynamics,
+                        [impl](const SimTK::State& s) { return impl->calcElectricalPower(s); }});
+        scene.addProbe({spec.name + ".stator_loss", "W", ProbeRole::Generic, SimTK::Stage::Dynamics,
+                        [impl](const SimTK::State& s) { return impl->calcStatorLoss(s); }});
+        const SupplyState rated;  // direct on line, rated voltage and frequency
+        const double wn = p.ratedSpeed;
+        scene.addDerivedValue({spec.name + ".rated_stator_copper_loss", impl->ratedStatorCopperLoss(), "W",
+                               "P_Cu1,n = Mn·ωn/η_n − Mn·ωc − P_0"});
+        scene.addDerivedValue({spec.name + ".rated_input_power", p.ratedTorque * wn / p.ratedEfficiency, "W",
+                               "P_in,n = Mn·ωn/η_n"});
+        scene.addDerivedValue({spec.name + ".rated_efficiency_model",
+                               impl->torqueAtSpeed(wn, rated) * wn / impl->electricalPowerAtSpeed(wn, rated), "1",
+                               "check: the model's M·ω/P_el at the rated speed on the natural curve (= rated_efficiency)"});
+        if (!impl->curve().hasCurrent())
+            scene.note("force " + spec.name + " stator copper loss",
+                       "no current data: P_Cu1 scaled as the heat in the rotor's own resistance, "
+                       "P_Cu1,n·(M·Δω/r)/(Mn·(ωc − ωn)) (magnetising current neglected, I1 ≈ I2')");
+    } else {
+        const double wc = p.synchronousSpeed;
+        scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Source,
+                             [impl, wc](const SimTK::State& s) {
+                                 return impl->calcTorque(s) * impl->supply(s).frequency * wc;
+                             },
+                             "air-gap power of " + spec.name +
+                                 " (electrical input less stator losses, not modelled: no rated_efficiency)"});
+        scene.note("output " + spec.name + ".electrical_power",
+                   "not available: give rated_efficiency and no_load_loss for the electrical input and stator losses");
+    }
     scene.addEnergyFlow({spec.name + ".rotor_heat", EnergyFlow::Kind::Dissipation,
                          [impl](const SimTK::State& s) { return impl->calcTorque(s) * impl->calcSlipSpeed(s); },
                          "heat in the rotor circuit of " + spec.name + " (and its starting resistance): M·(f·ωc − ω)"});
@@ -537,6 +699,18 @@ void registerInductionMotor(ElementRegistry& registry) {
             .optional(0.0)
             .atLeast(0),
         P::quantity("torque_limit", "N*m", "frequency_converter: torque limit (default none)").optional(never).above(0),
+        P::quantity("current_limit", "A", "frequency_converter: line current limit, needs current data (default none)")
+            .optional(never)
+            .above(0),
+        P::quantity("rated_efficiency", "1", "rated efficiency P_n/P_in,n; with no_load_loss: electrical input and "
+                                             "stator losses (default: none, input = air-gap power)")
+            .optional(0.0)
+            .above(0)
+            .below(1),
+        P::quantity("no_load_loss", "W", "with rated_efficiency: no-load loss P_0 at rated supply (iron, friction, "
+                                         "windage; the no-load test)")
+            .optional(0.0)
+            .atLeast(0),
         P::quantity("switch_off_time", "s", "supply switched off at this time (default never)")
             .optional(never)
             .atLeast(0),

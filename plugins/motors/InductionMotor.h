@@ -8,6 +8,7 @@
 #include <Simbody.h>
 
 #include <limits>
+#include <string>
 
 namespace milldyn {
 
@@ -15,6 +16,13 @@ namespace milldyn {
 /// (TorqueSpeedCurveParams), its starter and a switch-off time. All SI.
 struct InductionMotorParams : TorqueSpeedCurveParams {
     StarterParams starter;
+    /// Rated efficiency η_n = P_n/P_in,n [-] in (0, 1); 0: not given (the
+    /// motor's input is then its air-gap power, no stator-side losses).
+    double ratedEfficiency = 0;
+    /// No-load loss P_0 [W] at rated voltage and frequency (iron plus
+    /// friction and windage, the no-load test's input less its stator
+    /// copper loss), >= 0; required with ratedEfficiency.
+    double noLoadLoss = 0;
     /// Time at which the supply is switched off [s]; +inf: never.
     double switchOffTime = std::numeric_limits<double>::infinity();
 };
@@ -23,6 +31,20 @@ struct InductionMotorParams : TorqueSpeedCurveParams {
 /// torque reaches min(torqueLimit [N*m], its breakdown torque) on the
 /// stable branch (between synchronous speed and breakdown), by bisection.
 double calcHoldSlipSpeed(const TorqueSpeedCurve& curve, double torqueLimit);
+/// Frequency converter: the slip speed [rad/s] at which `curve`'s natural
+/// line current reaches currentLimit [A] on the stable branch (the
+/// breakdown slip speed if it stays below), by the same bisection; at
+/// constant V/f the current is a function of the slip speed alone. Throws
+/// std::invalid_argument when the curve has no current or the limit is not
+/// above the current at synchronous speed (the magnetising current).
+double calcCurrentHoldSlipSpeed(const TorqueSpeedCurve& curve, double currentLimit);
+
+/// Stator copper loss at the rated point [W]: P_Cu1,n = Mn·ωn/η_n − Mn·ωc − P_0
+/// (rated efficiency η_n [-], no-load loss P_0 [W]); <= 0 means the data
+/// leave none (refused).
+double calcRatedStatorCopperLoss(const TorqueSpeedCurveParams& curve, double ratedEfficiency, double noLoadLoss);
+/// Why the rated point leaves no stator copper loss, with its numbers.
+std::string describeRatedLosses(const TorqueSpeedCurveParams& curve, double ratedEfficiency, double noLoadLoss);
 
 /**
  * Drive torque of an induction motor on one pin-jointed shaft: a natural
@@ -43,12 +65,32 @@ double calcHoldSlipSpeed(const TorqueSpeedCurve& curve, double torqueLimit);
  * the natural torque at slip s/r (the rotor circuit sees R_rotor/s), so
  * for Kloss sk ∝ R with the breakdown torque unchanged.
  *
- * Power: the air-gap power P_ag = M·f·ωc is the motor's input (an
- * EnergyFlow source); the rotor circuit (and its starting resistance)
- * turns P_ag − M·ω = M·Δω into heat (a dissipation "NAME.rotor_heat"), so
- * a direct-on-line start of a pure inertia J to ωc dissipates ½·J·ωc² in
- * the rotor whatever the curve. Stator copper and iron losses are not
- * modelled. Switched off: M = 0 (the builder schedules that as a Scene
+ * Power: the air-gap power P_ag = M·f·ωc crosses to the rotor; the rotor
+ * circuit (and its starting resistance) turns P_ag − M·ω = M·Δω into heat
+ * (a dissipation "NAME.rotor_heat"), so a direct-on-line start of a pure
+ * inertia J to ωc dissipates ½·J·ωc² in the rotor whatever the curve.
+ * Without a rated efficiency the air-gap power is the motor's input (an
+ * EnergyFlow source). With one (η_n, and the no-load loss P_0) the
+ * electrical input is the source and the stator-side losses a second
+ * dissipation "NAME.stator_heat":
+ * <pre>
+ *   rated:   P_n = Mn·ωn,  P_in,n = P_n/η_n,  P_δn = Mn·ωc,
+ *            P_Cu1,n = P_in,n − P_δn − P_0            (> 0, else refused)
+ *   stator copper, with current data (circle diagram or a table's currents):
+ *            P_Cu1 = P_Cu1,n·k·(V·I_nat(ω_eq)/I_n)²     (phase current squared:
+ *            k = 1/3 in star, V the voltage; I_n the data's current at ωn)
+ *   without current data (magnetising current neglected, I1 ≈ I2'):
+ *            P_Cu1 = P_Cu1,n·(M·Δω/r)/(Mn·(ωc − ωn))   (the heat in the rotor's
+ *            own resistance over its rated value: ∝ I2'², any slip)
+ *   no-load: P_0·k·(V·f)²  (iron loss ∝ terminal voltage², as MSL's core loss
+ *            with no hysteresis part: V² at rated f; f² under V/f; the friction
+ *            and windage in P_0 scaled alike, an approximation)
+ *   P_el = P_ag + P_Cu1 + P_0·k·(V·f)²,  all 0 when switched off
+ * </pre>
+ * The torque law is the shaft's torque, so the friction and windage
+ * share of P_0 is booked on the input side: the model's efficiency at the
+ * rated point is η_n exactly (derived value NAME.rated_efficiency_model).
+ * Switched off: M = 0 (the builder schedules that as a Scene
  * switch event at switch_off_time). Starter steps are a discrete state:
  * switched at a time (a Scene switch event the integrator restarts at) or
  * at a speed (a kept value refreshed after each accepted step: the switch
@@ -76,6 +118,14 @@ double calcHoldSlipSpeed(const TorqueSpeedCurve& curve, double torqueLimit);
  * at its torque limit accelerates an inertia J against a load Mc at
  * (M_lim − Mc)/J, and its slip never exceeds the breakdown slip (checked
  * by the validation case start_converter_torque_limit).
+ *
+ * Frequency converter, current limit: with current data a current_limit
+ * I_lim gives a second hold slip speed, where the natural current
+ * I_nat(ωc − Δω) reaches I_lim (calcCurrentHoldSlipSpeed; at constant
+ * V/f the current depends on the slip speed alone); Δω_h is the smaller
+ * of the two, so while held the current is I_lim and the torque the
+ * natural torque at that slip speed, M(I_lim) (validation case
+ * start_converter_current_limit).
  *
  * The shaft gets +M as a mobility force about its pin axis; the reaction on
  * the stator (ground) is not modelled. The linear branch reaches ≈ 28·Mn at
@@ -110,6 +160,25 @@ public:
     void setStarterStep(SimTK::State& state, int step) const;
     /// Frequency converter: slip speed Δω_h the ramp holds at [rad/s].
     double holdSlipSpeed() const { return m_holdSlipSpeed; }
+    /// Frequency converter: whether Δω_h is the current limit's (not the torque limit's).
+    bool holdsAtCurrentLimit() const { return m_holdByCurrent; }
+
+    /// Whether the rated efficiency is given (stator-side losses modelled).
+    bool hasLosses() const { return m_params.ratedEfficiency > 0; }
+    /// Stator copper loss at the rated point P_Cu1,n [W] (0 without losses).
+    double ratedStatorCopperLoss() const { return m_statorCopperRated; }
+    /// Air-gap power M·f·ωc at ω [rad/s] under a supply [W].
+    double airGapPowerAtSpeed(double omega, const SupplyState& supply) const;
+    /// Stator copper loss P_Cu1 at ω under a supply [W] (0 without losses).
+    double statorCopperLossAtSpeed(double omega, const SupplyState& supply) const;
+    /// No-load (iron, friction and windage) loss under a supply [W].
+    double noLoadLossAt(const SupplyState& supply) const;
+    /// Electrical input P_ag + P_Cu1 + P_0,supply at ω under a supply [W].
+    double electricalPowerAtSpeed(double omega, const SupplyState& supply) const;
+    /// Stator-side losses (copper and no-load) in this state (0 when off) [W].
+    double calcStatorLoss(const SimTK::State& state) const;
+    /// Electrical input in this state (the air-gap power without losses; 0 when off) [W].
+    double calcElectricalPower(const SimTK::State& state) const;
     /// Frequency converter: whether the ramp is held at the torque limit.
     bool isRampHeld(const SimTK::State& state) const;
     /// Frequency converter: the hold state (1 held, 0 ramping) the state
@@ -146,6 +215,9 @@ private:
     TorqueSpeedCurve m_curve;
     Starter m_starter;
     double m_holdSlipSpeed = 0;
+    bool m_holdByCurrent = false;
+    double m_statorCopperRated = 0;  // P_Cu1,n [W]
+    double m_ratedCurrent = 0;       // the data's current at ωn [A] (NaN without current)
     bool isConverter() const { return m_params.starter.kind == StarterParams::Kind::FrequencyConverter; }
     double converterFrequency(const SimTK::State& state) const;
     // Allocated once per system in realizeTopology().

@@ -53,6 +53,9 @@ Starter::Starter(const StarterParams& p) : m_params(p) {
     if (!(std::isfinite(p.initialResistanceRatio) && p.initialResistanceRatio >= 1))
         badParameter("initial_resistance_ratio", p.initialResistanceRatio, "must be finite and >= 1");
     if (!(p.torqueLimit > 0)) badParameter("torque_limit", p.torqueLimit, "must be > 0");
+    if (!(p.currentLimit > 0)) badParameter("current_limit", p.currentLimit, "must be > 0");
+    if (std::isfinite(p.currentLimit) && p.kind != K::FrequencyConverter)
+        badParameter("current_limit", p.currentLimit, "only a frequency converter limits the current");
 }
 
 int Starter::switchCount() const {
@@ -80,7 +83,7 @@ SupplyState Starter::supply(double t, int step) const {
     return s;
 }
 
-StartSequenceState Starter::progress(double t, int step, double frequency, bool rampHeld) const {
+StartSequenceState Starter::progress(double t, int step, double frequency, bool rampHeld, bool heldByCurrent) const {
     using K = StarterParams::Kind;
     const StarterParams& p = m_params;
     StartSequenceState q;
@@ -114,7 +117,7 @@ StartSequenceState Starter::progress(double t, int step, double frequency, bool 
             q.text = q.finished ? "frequency converter at rated frequency"
                                 : std::string("frequency converter at f = ") + formatNumber(frequency, 4) +
                                       " of rated, " +
-                                      (rampHeld ? "its ramp held at the torque limit"
+                                      (rampHeld ? std::string("its ramp held at the ") + (heldByCurrent ? "current" : "torque") + " limit"
                                                 : "ramping (" + formatNumber(rampRate() * 100, 4) + " % of rated per s)");
             break;
         case K::RotorResistance: {

@@ -32,6 +32,9 @@ struct StarterParams {
     double rampTime = 0;
     /// Frequency converter: torque limit |M| <= M_lim [N*m]; +inf: none.
     double torqueLimit = std::numeric_limits<double>::infinity();
+    /// Frequency converter: line current limit [A]; +inf: none (the
+    /// InductionMotor holds the ramp where the current reaches it).
+    double currentLimit = std::numeric_limits<double>::infinity();
 };
 
 /// The supply an InductionMotor sees at one instant.
@@ -76,11 +79,13 @@ public:
     /// Frequency converter: the ramp's rate R = (1 − f0)/T [1/s].
     double rampRate() const { return (1 - m_params.initialFrequency) / m_params.rampTime; }
     /// Where the starting sequence stands at `time` [s] in step `step`, with
-    /// the converter's output frequency f/f_rated [-] and whether its ramp is
-    /// held at the torque limit: finished once the supply is full (delta,
-    /// full voltage, full frequency, rotor short-circuited); it waits on the
-    /// shaft while a switch at a speed is pending or the ramp is held.
-    StartSequenceState progress(double time, int step, double frequency, bool rampHeld) const;
+    /// the converter's output frequency f/f_rated [-], whether its ramp is
+    /// held and whether the hold is the current limit's (else the torque
+    /// limit's): finished once the supply is full (delta, full voltage,
+    /// full frequency, rotor short-circuited); it waits on the shaft while a
+    /// switch at a speed is pending or the ramp is held.
+    StartSequenceState progress(double time, int step, double frequency, bool rampHeld,
+                                bool heldByCurrent = false) const;
     /// Number of switches (steps after the first).
     int switchCount() const;
     bool switchesBySpeed() const { return !m_params.switchSpeeds.empty(); }

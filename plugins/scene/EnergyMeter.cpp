@@ -33,8 +33,11 @@ std::string energyCategoryKey(EnergyCategory c) {
 std::string energyCategoryLabel(EnergyCategory c) {
     switch (c) {
         case EnergyCategory::MotorInput:
-            return "drive input: the motors' air-gap power (electrical to mechanical), a prescribed drive's work";
-        case EnergyCategory::MotorLoss: return "motor loss: heat in the motor rotors (rotor copper loss)";
+            return "drive input: the motors' electrical input (their air-gap power where no rated_efficiency is "
+                   "given), a prescribed drive's work";
+        case EnergyCategory::MotorLoss:
+            return "motor loss: heat in the motors (rotor copper loss; stator copper and no-load loss where a "
+                   "rated_efficiency is given)";
         case EnergyCategory::Grinding:
             return "grinding: work taken by the charges and loads (ResistanceTorque, PeriodicLoad, DiscDrag)";
         case EnergyCategory::Friction: return "friction heat: journals, bearings, brakes, clutch slip";
@@ -56,7 +59,7 @@ std::string EnergyMeter::describe(std::size_t i) const {
     if (!f.what.empty()) return f.what;
     switch (m_categories.at(i)) {
         case EnergyCategory::MotorInput: return "work of the drive " + f.name;
-        case EnergyCategory::MotorLoss: return "heat in the rotor of " + f.name;
+        case EnergyCategory::MotorLoss: return "heat in the motor " + f.name;
         case EnergyCategory::Grinding: return "grinding work taken by " + f.name;
         case EnergyCategory::Friction: return "friction heat in " + f.name;
         case EnergyCategory::Damping: return "damping heat in " + f.name;

@@ -15,9 +15,10 @@ namespace milldyn {
  * An element declares the kind of its flow (EnergyFlow::Kind: source, load
  * or dissipation); the element type refines a dissipation into what heats:
  * <pre>
- *   MotorInput  every Source: a motor's air-gap power (electrical to
- *               mechanical), a prescribed drive's work
+ *   MotorInput  every Source: a motor's electrical input (its air-gap power
+ *               when no efficiency is given), a prescribed drive's work
  *   MotorLoss   InductionMotor's rotor heat (rotor copper loss, s·P_airgap)
+ *               and stator heat (stator copper and no-load loss)
  *   Grinding    every Load: SegmentCharge, ResistanceTorque, PeriodicLoad,
  *               DiscDrag (the work the machine exists to do)
  *   Friction    JournalFriction, ShaftBearings, Brake, Clutch (slip)

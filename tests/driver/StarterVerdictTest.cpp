@@ -148,20 +148,38 @@ TEST(StarterVerdict, RotorResistanceWaitingForASpeedNeverReachedIsAStall) {
     expectStalledOnTheStarter(r, "waits for the shaft to reach 160 rad/s");
 }
 
-// Torque limit 146.1 N*m against 30 N*m + 0.85 N*m*s/rad·ω: the load
-// reaches the limit at ω = (146.1 − 30)/0.85 = 136.6 rad/s, 89 % of the
-// rated 153.9 rad/s, where the converter holds its ramp for good.
-TEST(StarterVerdict, ConverterHeldAtItsTorqueLimitIsAStall) {
-    const AnalysisResult r = runModelFile(benchModel("converter_held",
-                                                     "    starter: frequency_converter\n    initial_frequency: 0.1\n"
-                                                     "    ramp_time: 1 s\n    torque_limit: 146.1 N*m\n",
-                                                     15, 30, 0.85),
-                                          {});
+// A converter whose ramp `lines` hold at the torque `holdTorque` [N*m],
+// against 30 N*m + 0.85 N*m*s/rad·ω: the load reaches it at
+// ω = (holdTorque − 30)/0.85, where the converter holds its ramp for good:
+// a stall whose verdict names the limit.
+void expectConverterStalledAtItsLimit(const std::string& name, const std::string& lines, const std::string& limit,
+                                      double holdTorque) {
+    const AnalysisResult r = runModelFile(
+        benchModel(name, "    starter: frequency_converter\n    initial_frequency: 0.1\n    ramp_time: 1 s\n" + lines,
+                   15, 30, 0.85),
+        {});
     EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
-    EXPECT_TRUE(says(r, "its ramp held at the torque limit")) << r.verdictText;
+    EXPECT_TRUE(says(r, "its ramp held at the " + limit)) << r.verdictText;
     ASSERT_NE(r.find("speed_at_end"), nullptr);
-    EXPECT_NEAR(r.find("speed_at_end")->value, (146.1 - 30) / 0.85, 0.01 * 136.6);
+    const double held = (holdTorque - 30) / 0.85;
+    EXPECT_NEAR(r.find("speed_at_end")->value, held, 0.01 * held);
     expectNoStartValues(r);
+}
+
+// Torque limit 146.1 N*m: held at 136.6 rad/s, 89 % of the rated 153.9 rad/s.
+TEST(StarterVerdict, ConverterHeldAtItsTorqueLimitIsAStall) {
+    expectConverterStalledAtItsLimit("converter_held", "    torque_limit: 146.1 N*m\n", "torque limit", 146.1);
+}
+
+// Current limit 42.75 A (1.5 I_N) on the circle of the catalogue data: the
+// hold slip 0.0321 gives the Kloss torque 146.72 N*m (the derived
+// hold_torque): held at 137.3 rad/s.
+TEST(StarterVerdict, ConverterHeldAtItsCurrentLimitIsAStallAndSaysSo) {
+    expectConverterStalledAtItsLimit(
+        "converter_current_held",
+        "    rated_current: 28.5 A\n    rated_power_factor: 0.85\n    locked_rotor_current_ratio: 7\n"
+        "    current_limit: 42.75 A\n",
+        "current limit", 146.72);
 }
 
 TEST(StarterVerdict, ConverterMidRampIsUnfinishedAndNamesTheConverter) {

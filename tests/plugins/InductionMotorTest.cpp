@@ -428,6 +428,7 @@ TEST(InductionMotorRegistryTest, SchemaListsTheDocumentedKeys) {
                                            "locked_rotor_current_ratio", "starter", "switch_times", "switch_speeds",
                                            "resistance_ratios", "initial_voltage", "initial_frequency",
                                            "initial_resistance_ratio", "ramp_time", "torque_limit",
+                                           "current_limit", "rated_efficiency", "no_load_loss",
                                            "switch_off_time"}));
     EXPECT_EQ(schema.find("law")->choices, (std::vector<std::string>{"kloss", "linear", "catalogue", "table", "kloss_modified"}));
     EXPECT_EQ(schema.find("starter")->defaultText, "direct_on_line");
@@ -437,6 +438,9 @@ TEST(InductionMotorRegistryTest, SchemaListsTheDocumentedKeys) {
     EXPECT_EQ(schema.find("rated_speed")->unit, "rad/s");
     EXPECT_EQ(schema.find("linear_slope")->unit, "N*m*s/rad");
     EXPECT_TRUE(std::isinf(*schema.find("switch_off_time")->defaultValue));
+    EXPECT_EQ(schema.find("current_limit")->unit, "A");
+    EXPECT_EQ(schema.find("no_load_loss")->unit, "W");
+    EXPECT_EQ(schema.find("rated_efficiency")->unit, "1");
 }
 
 TEST(InductionMotorRegistryTest, CrossCheckRejectsRatedSpeedNotBelowSynchronousNamingRatedSpeed) {

@@ -401,6 +401,166 @@ TEST(InductionMotorInput, BadConverterAndCurrentInputsGiveOneLocatedLine) {
     EXPECT_EQ(std::count(limit.begin(), limit.end(), '\n') + std::count(ratio.begin(), ratio.end(), '\n'), 0);
 }
 
+// The loss model from the rated efficiency, by hand for the bench motor
+// (Mn = 97.4 N*m, ωn = 153.94 rad/s, ωc = 157.08 rad/s): η = 0.915, P0 =
+// 450 W give P_in,n = Mn·ωn/η, P_Cu1,n = P_in,n − Mn·ωc − P0.
+InductionMotorParams lossy(bool currentData) {
+    InductionMotorParams p = kloss();
+    p.ratedEfficiency = 0.915;
+    p.noLoadLoss = 450;
+    if (currentData) {
+        p.ratedCurrent = 28.5;
+        p.ratedPowerFactor = 0.85;
+        p.lockedRotorCurrentRatio = 7.0;
+    }
+    return p;
+}
+
+double ratedCopperByHand() {
+    const double Mn = 97.4, wn = 1470 * kRpm, wc = 1500 * kRpm;
+    return Mn * wn / 0.915 - Mn * wc - 450;
+}
+
+TEST(InductionMotorLosses, RatedPointDrawsTheRatedInput) {
+    const double Mn = 97.4, wn = 1470 * kRpm;
+    for (bool currentData : {true, false}) {
+        Bench b(lossy(currentData));
+        const SupplyState dol;
+        EXPECT_NEAR(b.motor->ratedStatorCopperLoss(), ratedCopperByHand(), 1e-9) << currentData;
+        EXPECT_NEAR(b.motor->statorCopperLossAtSpeed(wn, dol), ratedCopperByHand(), 1e-9) << currentData;
+        EXPECT_NEAR(b.motor->electricalPowerAtSpeed(wn, dol), Mn * wn / 0.915, 1e-9) << currentData;
+    }
+    // Without a rated efficiency there are no stator-side losses.
+    Bench plain(kloss());
+    EXPECT_EQ(plain.motor->statorCopperLossAtSpeed(0, SupplyState()), 0.0);
+    EXPECT_EQ(plain.motor->noLoadLossAt(SupplyState()), 0.0);
+}
+
+// With current data the stator copper loss follows the phase current
+// squared: 7² at standstill (I_LR = 7 I_N); in star the phase current is
+// 1/√3 of delta's, so a third; at 0.4 V, 0.16. The no-load loss goes with
+// the terminal voltage squared: a third in star, 0.16 at 0.4 V, f² under
+// V/f (0.25 at half frequency); nothing when switched off.
+TEST(InductionMotorLosses, StatorLossesFollowTheSupply) {
+    Bench b(lossy(true));
+    const double P = ratedCopperByHand();
+    SupplyState u;
+    EXPECT_NEAR(b.motor->statorCopperLossAtSpeed(0, u), 49 * P, 1e-9 * 49 * P);
+    u.connection = 1.0 / 3;
+    EXPECT_NEAR(b.motor->statorCopperLossAtSpeed(0, u), 49 * P / 3, 1e-9 * 49 * P);
+    EXPECT_NEAR(b.motor->noLoadLossAt(u), 150, 1e-12);
+    u = SupplyState();
+    u.voltage = 0.4;
+    EXPECT_NEAR(b.motor->statorCopperLossAtSpeed(0, u), 0.16 * 49 * P, 1e-9 * 49 * P);
+    EXPECT_NEAR(b.motor->noLoadLossAt(u), 0.16 * 450, 1e-12);
+    u = SupplyState();
+    u.frequency = 0.5;
+    EXPECT_NEAR(b.motor->noLoadLossAt(u), 0.25 * 450, 1e-12);
+    SimTK::State s = b.sys.defaultState();
+    test::setShaft(s, b.shaft, 0, 0);
+    b.sys.system().realize(s, SimTK::Stage::Dynamics);
+    EXPECT_NEAR(b.motor->calcStatorLoss(s), 49 * P + 450, 1e-9 * 49 * P);
+    EXPECT_NEAR(b.motor->calcElectricalPower(s), klossByHand(1) * 1500 * kRpm + 49 * P + 450, 1e-9 * 49 * P);
+    b.motor->setOn(s, false);
+    b.sys.system().realize(s, SimTK::Stage::Dynamics);
+    EXPECT_EQ(b.motor->calcStatorLoss(s), 0.0);
+    EXPECT_EQ(b.motor->calcElectricalPower(s), 0.0);
+}
+
+// Without current data the stator copper loss scales as the heat in the
+// rotor's own resistance, M·Δω/r over its rated Mn·(ωc − ωn).
+TEST(InductionMotorLosses, WithoutCurrentDataTheStatorLossFollowsTheRotorHeat) {
+    Bench b(lossy(false));
+    const double wc = 1500 * kRpm, P = ratedCopperByHand(), rated = 97.4 * (wc - 1470 * kRpm);
+    SupplyState u;
+    EXPECT_NEAR(b.motor->statorCopperLossAtSpeed(0, u), P * klossByHand(1) * wc / rated, 1e-9 * P);
+    u.resistance = 5;  // r = 5: torque at slip 0.6 is the natural torque at 0.12, heat in R_rotor a fifth
+    EXPECT_NEAR(b.motor->statorCopperLossAtSpeed(0.4 * wc, u), P * klossByHand(0.6, 5) * 0.6 * wc / 5 / rated,
+                1e-9 * P);
+}
+
+// The stator-side losses add to the input without touching the mechanics:
+// the DOL bench (no current data) with and without the two keys has the
+// same rotor heat, and the electrical input exceeds the air-gap work by
+// exactly the stator heat; the balance closes with the stator heat in it.
+TEST(InductionMotorLosses, StatorHeatAddsToTheInputAndTheBalanceCloses) {
+    const std::string model = std::string(MILLDYN_SOURCE_DIR) + "/models/start_bench_dol.yaml";
+    const std::vector<Override> tight = {{"integrator.accuracy", "1e-9"}, {"outputs.plots", "false"}};
+    std::vector<Override> lossy = tight;
+    lossy.push_back({"elements.motor.rated_efficiency", "0.915"});
+    lossy.push_back({"elements.motor.no_load_loss", "450 W"});
+    const AnalysisResult plain = runModelFile(model, tight), withLosses = runModelFile(model, lossy);
+    auto value = [](const AnalysisResult& r, const std::string& name) {
+        const ResultScalar* v = r.find(name);
+        return v ? v->value : std::nan("");
+    };
+    const double rotor = value(plain, "energy.motor.rotor_heat");
+    EXPECT_NEAR(value(withLosses, "energy.motor.rotor_heat"), rotor, 1e-7 * rotor);
+    const double stator = value(withLosses, "energy.motor.stator_heat");
+    EXPECT_GT(stator, 0.0);
+    EXPECT_NEAR(value(withLosses, "energy.motor") - value(plain, "energy.motor"), stator, 1e-7 * stator);
+    EXPECT_NEAR(value(withLosses, "energy_split.motor_loss"), rotor + stator, 1e-7 * (rotor + stator));
+    EXPECT_LE(std::abs(value(withLosses, "energy_balance_relative")), 1e-8);
+    EXPECT_TRUE(std::isnan(value(plain, "energy.motor.stator_heat")));
+}
+
+// The converter's current hold: the slip speed where the circle current is
+// the limit; a limit above the breakdown current holds at breakdown; one at
+// or below the magnetising current, or a curve without current, is refused.
+TEST(InductionMotorConverter, CurrentHoldSlipIsWhereTheCurrentReachesTheLimit) {
+    const double wc = 1500 * kRpm, sk = 0.02 * (2.5 + std::sqrt(2.5 * 2.5 - 1));
+    const TorqueSpeedCurve curve(lossy(true));
+    const double held = calcCurrentHoldSlipSpeed(curve, 42.75);
+    EXPECT_NEAR(curve.current(wc - held), 42.75, 1e-12 * 42.75);
+    EXPECT_GT(held, 0.02 * wc);  // above rated current: beyond the rated slip
+    EXPECT_NEAR(calcCurrentHoldSlipSpeed(curve, 1e4) / wc, sk, 1e-15);
+    const double Imu = CurrentCircle(circleData()).magnetisingCurrent();
+    EXPECT_THROW(calcCurrentHoldSlipSpeed(curve, Imu), std::invalid_argument);
+    EXPECT_THROW(calcCurrentHoldSlipSpeed(TorqueSpeedCurve(kloss()), 42.75), std::invalid_argument);
+    // The motor holds at the smaller of the torque and current slips.
+    InductionMotorParams p = lossy(true);
+    p.starter.kind = StarterParams::Kind::FrequencyConverter;
+    p.starter.rampTime = 1;
+    p.starter.currentLimit = 42.75;
+    p.starter.torqueLimit = 200;
+    Bench current(p);
+    EXPECT_TRUE(current.motor->holdsAtCurrentLimit());
+    EXPECT_EQ(current.motor->holdSlipSpeed(), held);
+    p.starter.torqueLimit = 120;
+    Bench torque(p);
+    EXPECT_FALSE(torque.motor->holdsAtCurrentLimit());
+    EXPECT_EQ(torque.motor->holdSlipSpeed(), calcHoldSlipSpeed(curve, 120));
+}
+
+TEST(InductionMotorInput, BadLossAndCurrentLimitInputsGiveOneLocatedLine) {
+    const std::string circle = "    rated_current: 28.5 A\n    rated_power_factor: 0.85\n    locked_rotor_current_ratio: 7\n";
+    const std::string alone = errorOf("    rated_efficiency: 0.9\n");
+    EXPECT_EQ(alone.rfind("m.yaml:14:23: error: motor.rated_efficiency: give rated_efficiency and no_load_loss together",
+                          0),
+              0u)
+        << alone;
+    // η = 0.975 at sn = 0.02 leaves P_in,n = 15378 W < Mn·ωc + P0 = 15750 W.
+    const std::string high = errorOf("    rated_efficiency: 0.975\n    no_load_loss: 450 W\n");
+    EXPECT_EQ(high.rfind("m.yaml:14:23: error: motor.rated_efficiency: no stator copper loss is left", 0), 0u) << high;
+    EXPECT_NE(high.find("P_Cu1,n = -3"), std::string::npos) << high;
+    const std::string range = errorOf("    rated_efficiency: 1.2\n    no_load_loss: 450 W\n");
+    EXPECT_NE(range.find("error: motor.rated_efficiency: must be < 1"), std::string::npos) << range;
+    const std::string converter = "    starter: frequency_converter\n    ramp_time: 1 s\n";
+    const std::string noData = errorOf(converter + "    current_limit: 40 A\n");
+    EXPECT_EQ(noData.rfind("m.yaml:16:20: error: motor.current_limit: a current limit needs the motor's current data", 0),
+              0u)
+        << noData;
+    const std::string low = errorOf(circle + converter + "    current_limit: 10 A\n");
+    EXPECT_NE(low.find("error: motor.current_limit: current_limit = 10 A is not above the no-load "
+                       "(magnetising) current 11.87"),
+              std::string::npos)
+        << low;
+    const std::string other = errorOf(circle + "    starter: soft_start\n    ramp_time: 1 s\n    current_limit: 40 A\n");
+    EXPECT_NE(other.find("error: motor.current_limit: not used with starter soft_start"), std::string::npos) << other;
+    for (const std::string* e : {&alone, &high, &range, &noData, &low, &other})
+        EXPECT_EQ(std::count(e->begin(), e->end(), '\n'), 0) << *e;
+}
+
 // The dq machine's currents and torque from its flux states, by hand:
 // with ψs = 1 Wb (α axis) and ψr = 0.9j Wb, is = (Lr·ψs − Lm·ψr)/D and
 // T = 1.5·p·Im(conj(ψs)·is).

@@ -55,29 +55,66 @@ double modifiedKlossInertiaStartTime(double J, double wc, double Mk, double sk, 
     return J * wc / (2 * Mk * (1 + q)) * ((1 - se * se) / (2 * sk) + sk * std::log(1 / se) + 2 * q * (1 - se));
 }
 
-double circleDiagramCurrent(double s, double sn, double IN, double c, double k) {
+namespace {
+
+/// The circle through the rated point, per unit of I_N: magnetising current
+/// m, diameter D, slip scale s_c.
+struct Circle {
+    double m = 0, D = 0, sc = 0;
+};
+
+double circleMagnitude(const Circle& q, double slip) {
+    if (slip == 0) return q.m;
+    const double rho = q.sc / slip;
+    return std::hypot(q.D * rho / (1 + rho * rho), q.m + q.D / (1 + rho * rho));
+}
+
+/// Fits the circle to the data (in m, see the header); false if none fits.
+bool fitCircle(double sn, double c, double k, Circle& out) {
     const double sinPhi = std::sqrt(1 - c * c);
-    // The circle through the rated point for a magnetising current m.
-    struct Circle {
-        double m, D, sc;
-    };
     auto circle = [&](double m) {
         const double w = sinPhi - m;
         return Circle{m, (c * c + w * w) / w, sn * c / w};
     };
-    auto magnitude = [](const Circle& q, double slip) {
-        if (slip == 0) return q.m;
-        const double rho = q.sc / slip;
-        return std::hypot(q.D * rho / (1 + rho * rho), q.m + q.D / (1 + rho * rho));
-    };
     double lo = 0, hi = sinPhi - c * sn;
-    if (!(magnitude(circle(lo), 1.0) <= k && k <= magnitude(circle(hi), 1.0))) return std::nan("");
+    if (!(circleMagnitude(circle(lo), 1.0) <= k && k <= circleMagnitude(circle(hi), 1.0))) return false;
     for (int i = 0; i < 300; ++i) {
         const double mid = 0.5 * (lo + hi);
         if (mid <= lo || mid >= hi) break;
-        (magnitude(circle(mid), 1.0) < k ? lo : hi) = mid;
+        (circleMagnitude(circle(mid), 1.0) < k ? lo : hi) = mid;
     }
-    return IN * magnitude(circle(0.5 * (lo + hi)), s);
+    out = circle(0.5 * (lo + hi));
+    return true;
+}
+
+}  // namespace
+
+double circleDiagramCurrent(double s, double sn, double IN, double c, double k) {
+    Circle q;
+    if (!fitCircle(sn, c, k, q)) return std::nan("");
+    return IN * circleMagnitude(q, s);
+}
+
+double circleDiagramSlipAtCurrent(double current, double sn, double IN, double c, double k) {
+    Circle q;
+    if (!fitCircle(sn, c, k, q)) return std::nan("");
+    // |I|² = m² + x·D·(D + 2m) with x = 1/(1 + ρ²), ρ = s_c/s.
+    const double i = current / IN;
+    const double x = (i * i - q.m * q.m) / (q.D * (q.D + 2 * q.m));
+    if (!(x > 0 && x <= 1)) return std::nan("");
+    return q.sc / std::sqrt(1 / x - 1);
+}
+
+double ratedStatorCopperLoss(double Mn, double wn, double wc, double eta, double P0) {
+    const double ratedInput = Mn * wn / eta;     // P_n/η_n
+    const double airGap = Mn * wc;               // rotor copper loss + shaft power
+    return ratedInput - airGap - P0;
+}
+
+double electricalInputPower(double M, double wc, double statorCopperRated, double current, double ratedCurrent,
+                            double P0) {
+    const double r = current / ratedCurrent;
+    return M * wc + statorCopperRated * r * r + P0;
 }
 
 double starDeltaCurrentRatio() {

@@ -60,6 +60,30 @@ double modifiedKlossInertiaStartTime(double J, double synchronousSpeed, double b
 /// NaN when no Iμ there fits.
 double circleDiagramCurrent(double slip, double ratedSlip, double ratedCurrent, double powerFactor,
                             double lockedRotorRatio);
+/// The slip [-] at which the circle-diagram current (the circle of
+/// circleDiagramCurrent, same data) is `current` [A], in closed form: with
+/// x = 1/(1 + ρ²) the circle gives |I|² = Iμ² + x·D·(D + 2Iμ) (per unit), so
+/// x = (I² − Iμ²)/(D·(D + 2Iμ)) and s = s_c/√(1/x − 1). NaN outside the
+/// circle's range. Under a converter at constant V/f this is the slip at
+/// which a current limit holds (slip speed s·ωc).
+double circleDiagramSlipAtCurrent(double current, double ratedSlip, double ratedCurrent, double powerFactor,
+                                  double lockedRotorRatio);
+
+/// Loss model of an induction motor from its rated efficiency η (the
+/// split of IEC 60034-2-1's summation of losses, stray load loss lumped
+/// with the stator copper loss): at rated load the input P_n/η is the
+/// air-gap power Mn·ωc (shaft power Mn·ωn plus rotor copper loss
+/// Mn·(ωc − ωn)), the stator copper loss and the no-load loss P0 [W]; so
+/// P_Cu1,n = Mn·ωn/η − Mn·ωc − P0 [W].
+double ratedStatorCopperLoss(double Mn, double ratedSpeed, double synchronousSpeed, double ratedEfficiency,
+                             double noLoadLoss);
+/// Electrical input [W] at rated voltage and frequency of a motor giving
+/// torque M [N*m] with line current I [A]: the air-gap power M·ωc, the
+/// stator copper loss P_Cu1,n·(I/I_N)² (∝ current², R1 constant) and the
+/// no-load loss P0 (constant at rated voltage and frequency).
+double electricalInputPower(double M, double synchronousSpeed, double statorCopperRated, double current,
+                            double ratedCurrent, double noLoadLoss);
+
 /// Line-current ratio of a star start to delta at the same slip: phase
 /// current 1/√3, and a delta's line current is √3 its phase current: 1/3.
 double starDeltaCurrentRatio();
