@@ -1,4 +1,5 @@
 #include "plugins/motors/DqInductionMotor.h"
+#include "plugins/motors/StarterEvents.h"
 
 #include "plugins/scene/ElementRegistry.h"
 
@@ -211,17 +212,7 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     const SimTK::MobilizedBody mobod = shaft->mobod;
-    const std::string starterName = Starter::kindName(st.kind);
-    for (std::size_t i = 0; i < st.switchTimes.size(); ++i) {
-        const int step = static_cast<int>(i) + 1;
-        scene.addSwitchEvent({Scene::SwitchEvent::Kind::StarterStep, st.switchTimes[i],
-                              spec.name + " " + starterName + " step " + std::to_string(step),
-                              [impl, step](SimTK::State& s) { impl->setStarterStep(s, step); }});
-    }
-    // A start cut short while the starter is still in circuit is unfinished.
-    if (st.kind != StarterKind::DirectOnLine)
-        scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); },
-                                [impl](SimTK::State& s) { impl->finishStarter(s); }});
+    addStarterEvents(scene, spec.name, st, impl);
     // Steady running with the field built up (not switched on unexcited).
     scene.addSteadyInitializer([impl](SimTK::State& s) { impl->setSteadyFluxes(s); });
     scene.addSpeedHint(shaft->name, 2 * M_PI * p.frequency / p.polePairs);
@@ -245,7 +236,8 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     scene.addEnergyFlow({spec.name + ".copper_heat", EnergyFlow::Kind::Dissipation,
                          [impl](const SimTK::State& s) { return impl->calcCopperLoss(s); },
                          "heat in the stator and rotor windings of " + spec.name});
-    scene.note("force " + spec.name + " (DqInductionMotor, " + starterName + ")", "drives body " + shaft->name);
+    scene.note("force " + spec.name + " (DqInductionMotor, " + Starter::kindName(st.kind) + ")",
+               "drives body " + shaft->name);
 }
 
 }  // namespace

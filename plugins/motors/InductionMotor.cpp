@@ -1,4 +1,5 @@
 #include "plugins/motors/InductionMotor.h"
+#include "plugins/motors/StarterEvents.h"
 #include "plugins/scene/Format.h"
 
 #include "plugins/scene/ElementRegistry.h"
@@ -504,16 +505,7 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     if (std::isfinite(p.switchOffTime))
         scene.addSwitchEvent({Scene::SwitchEvent::Kind::DriveOff, p.switchOffTime, spec.name + " switched off",
                               [impl](SimTK::State& s) { impl->setOn(s, false); }});
-    const std::string starterName = Starter::kindName(st.kind);
-    for (std::size_t i = 0; i < st.switchTimes.size(); ++i) {
-        const int step = static_cast<int>(i) + 1;
-        scene.addSwitchEvent({Scene::SwitchEvent::Kind::StarterStep, st.switchTimes[i],
-                              spec.name + " " + starterName + " step " + std::to_string(step),
-                              [impl, step](SimTK::State& s) { impl->setStarterStep(s, step); }});
-    }
-    if (st.kind != StarterKind::DirectOnLine)
-        scene.addStartSequence({spec.name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); },
-                                [impl](SimTK::State& s) { impl->finishStarter(s); }});
+    addStarterEvents(scene, spec.name, st, impl);
     const SimTK::MobilizedBody mobod = shaft->mobod;
     if (!st.switchSpeeds.empty()) {
         // A switch at a speed: the step is a value kept between steps,
@@ -642,7 +634,7 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
         scene.addDerivedValue({spec.name + ".breakdown_speed", c.pointSpeeds()[k], "rad/s",
                                "speed of the largest torque"});
     }
-    scene.note("force " + spec.name + " (InductionMotor, " + spec.text("law") + ", " + starterName + ")",
+    scene.note("force " + spec.name + " (InductionMotor, " + spec.text("law") + ", " + Starter::kindName(st.kind) + ")",
                "drives body " + shaft->name);
 }
 

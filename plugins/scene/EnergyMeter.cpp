@@ -8,7 +8,8 @@ EnergyCategory energyCategory(EnergyFlow::Kind kind, const std::string& elementT
     if (kind == EnergyFlow::Kind::Source) return EnergyCategory::MotorInput;
     if (kind == EnergyFlow::Kind::Load) return EnergyCategory::Grinding;
     static const std::map<std::string, EnergyCategory> heat = {
-        {"InductionMotor", EnergyCategory::MotorLoss},    {"JournalFriction", EnergyCategory::Friction},
+        {"InductionMotor", EnergyCategory::MotorLoss},    {"DqInductionMotor", EnergyCategory::MotorLoss},
+        {"JournalFriction", EnergyCategory::Friction},
         {"ShaftBearings", EnergyCategory::Friction},      {"Brake", EnergyCategory::Friction},
         {"Clutch", EnergyCategory::Friction},             {"TorsionalCoupling", EnergyCategory::Damping},
         {"BeltDrive", EnergyCategory::Damping},           {"GearPair", EnergyCategory::Damping},
@@ -37,7 +38,7 @@ std::string energyCategoryLabel(EnergyCategory c) {
                    "given), a prescribed drive's work";
         case EnergyCategory::MotorLoss:
             return "motor loss: heat in the motors (rotor copper loss; stator copper and no-load loss where a "
-                   "rated_efficiency is given)";
+                   "rated_efficiency is given; a dq machine's stator and rotor copper loss)";
         case EnergyCategory::Grinding:
             return "grinding: work taken by the charges and loads (ResistanceTorque, PeriodicLoad, DiscDrag)";
         case EnergyCategory::Friction: return "friction heat: journals, bearings, brakes, clutch slip";

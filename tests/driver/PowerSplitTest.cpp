@@ -158,6 +158,7 @@ TEST(PowerSplit, CategoriesComeFromTheElementType) {
     EXPECT_EQ(energyCategory(EnergyFlow::Kind::Load, "SegmentCharge"), EnergyCategory::Grinding);
     EXPECT_EQ(energyCategory(EnergyFlow::Kind::Dissipation, "JournalFriction"), EnergyCategory::Friction);
     EXPECT_EQ(energyCategory(EnergyFlow::Kind::Dissipation, "Clutch"), EnergyCategory::Friction);
+    EXPECT_EQ(energyCategory(EnergyFlow::Kind::Dissipation, "DqInductionMotor"), EnergyCategory::MotorLoss);
     EXPECT_EQ(energyCategory(EnergyFlow::Kind::Dissipation, "BeltDrive"), EnergyCategory::Damping);
     EXPECT_EQ(energyCategory(EnergyFlow::Kind::Dissipation, "SomePluginType"), EnergyCategory::OtherHeat);
 }
