@@ -604,13 +604,25 @@ double smallestAfter(const AnalysisResult& r, std::size_t from, const std::strin
     return v;
 }
 
-void liveChargeTripCase(std::vector<ValidationRow>& rows) {
+/// A live-charge bench run at the comparison's own accuracy (the shipped
+/// defaults are their fronts'), and the oracle over the same time after the trip.
+struct LiveChargeRun {
     ModelSpec spec;
-    // The comparison's own accuracy: the shipped default is its front's (CPodes 1e-7).
-    const AnalysisResult r = runModelFile(model("live_charge_trip"), kLiveChargeAccuracy, &spec);
-    const LiveCharge f = liveCharge(spec, r, true);
-    const double tEnd = r.value(r.rows.size() - 1, "time");
-    const oc::LiveChargeTripResult o = oc::simulateLiveChargeTrip(f.trip, tEnd - f.tripTime, 1e-5);
+    AnalysisResult r;
+    LiveCharge f;
+    oc::LiveChargeTripResult o;
+};
+LiveChargeRun runLiveCharge(const std::string& name, bool backstop) {
+    LiveChargeRun run;
+    run.r = runModelFile(model(name), kLiveChargeAccuracy, &run.spec);
+    run.f = liveCharge(run.spec, run.r, backstop);
+    const double tEnd = run.r.value(run.r.rows.size() - 1, "time");
+    run.o = oc::simulateLiveChargeTrip(run.f.trip, tEnd - run.f.tripTime, 1e-5);
+    return run;
+}
+
+void liveChargeTripCase(std::vector<ValidationRow>& rows) {
+    const auto& [spec, r, f, o] = runLiveCharge("live_charge_trip", true);
     rows.push_back(compareRow("start_live_charge_trip", "charge lag at the trip (steady running)", "rad",
                               r.value(f.tripRow, "charge.lag"), o.lagAtTrip, kIntegratedTolerance,
                               "α0 = asin(c_w·ω0/W): the wall drag's torque balances the weight's moment"));
@@ -659,11 +671,7 @@ void liveChargeTripCase(std::vector<ValidationRow>& rows) {
 }
 
 void liveChargeRollbackCase(std::vector<ValidationRow>& rows) {
-    ModelSpec spec;
-    const AnalysisResult r = runModelFile(model("live_charge_rollback"), kLiveChargeAccuracy, &spec);
-    const LiveCharge f = liveCharge(spec, r, false);
-    const double tEnd = r.value(r.rows.size() - 1, "time");
-    const oc::LiveChargeTripResult o = oc::simulateLiveChargeTrip(f.trip, tEnd - f.tripTime, 1e-5);
+    const auto& [spec, r, f, o] = runLiveCharge("live_charge_rollback", false);
     // Sampled extremes are within dt/2 of the true ones: a relative error of
     // at most ½·ω_n²·(dt/2)², ω_n² = W/J_c the charge's pendulum frequency.
     const double dt = spec.outputs.sampleInterval;
