@@ -287,9 +287,14 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     for (std::size_t i = 0; i < scene->probes().size(); ++i)
         peakWanted[i] = std::find(spec.outputs.peaks.begin(), spec.outputs.peaks.end(), scene->probes()[i].name) !=
                         spec.outputs.peaks.end();
+    // When each starting sequence first stood finished (a sample's time).
+    const auto& sequences = scene->startSequences();
+    std::vector<std::optional<double>> sequenceEnd(sequences.size());
     auto onSample = [&](const SimTK::State& s) {
         const std::vector<double>& values = sim.probeValues();
         table.record(s, values);
+        for (std::size_t i = 0; i < sequences.size(); ++i)
+            if (!sequenceEnd[i] && sequences[i].state(s).finished) sequenceEnd[i] = s.getTime();
         if (observer) {
             SimTK::State drawn = s;
             scene->system().realize(drawn, SimTK::Stage::Acceleration);
@@ -392,6 +397,13 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             result.results.push_back(
                 {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
         }
+    if (start == "rest")
+        for (std::size_t i = 0; i < sequences.size(); ++i)
+            if (sequenceEnd[i])
+                result.results.push_back({"sequence_end." + sequences[i].name, *sequenceEnd[i], "s",
+                                          "first sample at which " + sequences[i].name +
+                                              "'s starting sequence had finished (starter out of circuit, clutch "
+                                              "engaged and locked)"});
     if (start == "rest" && omega > 0 && reached) {
         for (const auto& row : result.rows)
             if (row[speedCol] >= 0.95 * omega) {

@@ -99,6 +99,8 @@ TEST(StarterVerdict, LiquidResistanceRunPastItsRampCompletesAndSaysSo) {
     EXPECT_EQ(r.verdict, "completed") << r.verdictText;
     EXPECT_TRUE(says(r, "liquid-resistance starter shorted since 2 s")) << r.verdictText;
     EXPECT_NE(r.find("start_time"), nullptr);
+    ASSERT_NE(r.find("sequence_end.motor"), nullptr);
+    EXPECT_DOUBLE_EQ(r.find("sequence_end.motor")->value, 2.0);  // the ramp's end, a 5 ms sample
 }
 
 // V0 = 0.85: unloaded, the shaft runs within 1 % of synchronous on 0.85 V
@@ -130,6 +132,28 @@ TEST(StarterVerdict, StarDeltaSwitchedCompletes) {
         runModelFile(benchModel("star_done", "    starter: star_delta\n    switch_speeds: [140 rad/s]\n", 20), {});
     EXPECT_EQ(r.verdict, "completed") << r.verdictText;
     EXPECT_TRUE(says(r, "star-delta starter switched to delta")) << r.verdictText;
+    // sequence_end is the first sample in delta: there the motor gives the
+    // Kloss torque M = 2·Mk/(s/sk + sk/s) of its speed, a sample before a
+    // third of it (star). Mk = 2.5·97.4 N*m, sk = 0.0958258 (sn = 0.02).
+    const ResultScalar* end = r.find("sequence_end.motor");
+    ASSERT_NE(end, nullptr);
+    EXPECT_GE(end->value, 1.0);
+    const auto column = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(r.columnNames.begin(), r.columnNames.end(), name) -
+                                        r.columnNames.begin());
+    };
+    const std::size_t speed = column("shaft.speed"), torque = column("motor.torque");
+    const auto kloss = [](double omega) {
+        const double s = 1 - omega / (1500 * 3.14159265358979323846 / 30), sk = 0.0958258;
+        return 2 * 2.5 * 97.4 / (s / sk + sk / s);
+    };
+    std::size_t i = 0;
+    while (i < r.rows.size() && r.rows[i][0] < end->value) ++i;
+    ASSERT_GT(i, 0u);
+    ASSERT_LT(i, r.rows.size());
+    EXPECT_GE(r.rows[i][speed], 140.0);
+    EXPECT_NEAR(r.rows[i][torque] / kloss(r.rows[i][speed]), 1.0, 1e-6);
+    EXPECT_NEAR(r.rows[i - 1][torque] / kloss(r.rows[i - 1][speed]), 1.0 / 3, 1e-6);
 }
 
 TEST(StarterVerdict, RotorResistanceStepStillInCircuitIsUnfinished) {
