@@ -107,6 +107,23 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
     return h;
 }
 
+/// The starting sequences (Scene::startSequences) in a state, by where they
+/// stand, each as "name: where it stands", joined by "; ".
+struct SequenceLists {
+    std::string running;   ///< not finished, advancing with time
+    std::string waiting;   ///< not finished, waiting on the shaft
+    std::string finished;
+};
+SequenceLists sequencesAt(const Scene& scene, const SimTK::State& state) {
+    SequenceLists lists;
+    for (const StartSequence& q : scene.startSequences()) {
+        const StartSequenceState st = q.state(state);
+        std::string& list = st.finished ? lists.finished : st.waitsOnShaft ? lists.waiting : lists.running;
+        list += (list.empty() ? "" : "; ") + q.name + ": " + st.text;
+    }
+    return lists;
+}
+
 /**
  * The start verdict (a run from rest) over the start window, with the
  * starting sequences (starters, clutch engagements; Scene::startSequences)
@@ -128,13 +145,8 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
     if (!h.valid) return;
     const ElementSpec& sc = spec.scenario;
     const double fraction = sc.number("stall_fraction");
-    // The starting sequences at the window's end: "name: where it stands".
-    std::string running, waiting, finished;
-    for (const StartSequence& q : scene.startSequences()) {
-        const StartSequenceState st = q.state(end);
-        std::string& list = st.finished ? finished : st.waitsOnShaft ? waiting : running;
-        list += (list.empty() ? "" : "; ") + q.name + ": " + st.text;
-    }
+    const SequenceLists seq = sequencesAt(scene, end);
+    const std::string &running = seq.running, &waiting = seq.waiting, &finished = seq.finished;
     const std::string endText = " at " + fmt(end.getTime()) + " s";
     const std::string ref = h.hinted ? "the drives' running speed " + fmt(h.wRef) + " rad/s referred to " + body.name
                                      : "its final speed (no drive hints a rated speed)";
@@ -193,10 +205,14 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
  *                held at the end (a periodic load, a run still settling: the
  *                text gives how far it moved)
  *   unfinished:  a run-out was asked (runout_body) and that body had not
- *                come to rest at end_time
+ *                come to rest at end_time; or, with no switch-off, a
+ *                starting sequence that advances with time had not finished
+ *                at the end (a flying start still on its starter)
  */
-void judgeRun(const ModelSpec& spec, const SceneBody& body, const HoldCheck& h, bool switched, double switchTime,
-              const std::optional<double>& stopTime, double tLast, double wLast, AnalysisResult& result) {
+void judgeRun(const Scene& scene, const ModelSpec& spec, const SceneBody& body, const HoldCheck& h, bool switched,
+              double switchTime, const std::optional<double>& stopTime, const SimTK::State& last,
+              AnalysisResult& result) {
+    const double tLast = last.getTime(), wLast = pinSpeed(last, body.mobod);
     if (!h.valid) return;
     const ElementSpec& sc = spec.scenario;
     const std::string from = sc.text("initial_state") == "steady"
@@ -211,8 +227,19 @@ void judgeRun(const ModelSpec& spec, const SceneBody& body, const HoldCheck& h, 
                                       : "the larger of its first and last speeds (no drive hints one)");
     const std::string runout = sc.text("runout_body");
     if (!switched) {
+        // A run from a given state whose starter is still in circuit at the
+        // end (a flying start on its ramp) has not reached its running.
+        const SequenceLists seq = sequencesAt(scene, last);
+        if (!seq.running.empty()) {
+            result.verdict = "unfinished";
+            result.verdictText = "run unfinished: " + began + "; the starting sequence had not finished at " +
+                                 fmt(tLast) + " s (" + seq.running + "); " + heldText + ref;
+            return;
+        }
         result.verdict = h.held ? "steady_held" : "ran";
-        result.verdictText = (h.held ? "steady held: " : "ran, not steady at the end: ") + began + "; " + heldText + ref;
+        result.verdictText = (h.held ? "steady held: " : "ran, not steady at the end: ") + began + "; " + heldText +
+                             (seq.waiting.empty() ? "" : "; the starting sequence waits on the shaft (" + seq.waiting + ")") +
+                             ref;
         return;
     }
     const std::string off = began + "; before switch-off at " + fmt(switchTime) + " s: " + heldText;
@@ -344,8 +371,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     if (start == "rest")
         judgeStart(*scene, spec, speedBody, holdCheck, steady, result);
     else
-        judgeRun(spec, speedBody, holdCheck, switched, switchTime, stopTime, last.getTime(),
-                 pinSpeed(last, speedBody.mobod), result);
+        judgeRun(*scene, spec, speedBody, holdCheck, switched, switchTime, stopTime, last, result);
     // A start that did not complete has no steady values. (A run from a
     // given or steady state keeps the names: what it ends in is the user's
     // question, e.g. a braked run-out's end speed.)

@@ -297,6 +297,22 @@ TEST(StarterVerdict, SteadyRunningHasTheClutchEngaged) {
     EXPECT_NEAR(drum, motor, 0.01);
 }
 
+// A flying start (initial_state: file, the shaft given 150 rad/s) on a
+// 10 s soft-start ramp, cut at 2 s: the speed holds, the starter is still
+// in circuit: unfinished, not steady_held.
+TEST(StarterVerdict, ARunFromAGivenStateStillOnItsStarterIsUnfinished) {
+    const std::string path =
+        benchModel("flying", "    starter: soft_start\n    initial_voltage: 0.85\n    ramp_time: 10 s\n", 2);
+    const std::vector<Override> fromFile = {{"scenario.initial_state", "file"}, {"bodies.shaft.initial_speed", "150 rad/s"}};
+    const AnalysisResult cut = runModelFile(path, fromFile);
+    EXPECT_EQ(cut.verdict, "unfinished") << cut.verdictText;
+    EXPECT_TRUE(says(cut, "soft start at V = 0.88 of rated, 20 % of its 10 s ramp")) << cut.verdictText;
+    std::vector<Override> past = fromFile;
+    past.push_back({"scenario.end_time", "12 s"});
+    const AnalysisResult done = runModelFile(path, past);
+    EXPECT_EQ(done.verdict, "steady_held") << done.verdictText;
+}
+
 TEST(StarterVerdict, CliPrintsTheUnfinishedStarterAndNoStartTime) {
     const std::string dir = ::testing::TempDir() + "/starter_verdict_cli";
     std::ostringstream out, err;
