@@ -26,7 +26,7 @@ void addReducedInertias(Scene& scene) {
     Matrix g;
     matter.calcG(s, g);
     const auto& residuals = scene.steadyResiduals();
-    Eigen::MatrixXd rows(g.nrow() + static_cast<int>(residuals.size()), n);
+    ::Eigen::MatrixXd rows(g.nrow() + static_cast<int>(residuals.size()), n);
     for (int i = 0; i < g.nrow(); ++i)
         for (int j = 0; j < n; ++j) rows(i, j) = g(i, j);
     std::vector<double> atRest(residuals.size());
@@ -40,17 +40,17 @@ void addReducedInertias(Scene& scene) {
         for (std::size_t k = 0; k < residuals.size(); ++k)
             rows(g.nrow() + static_cast<int>(k), j) = residuals[k].value(s) - atRest[k];
     }
-    Eigen::VectorXd v;
+    ::Eigen::VectorXd v;
     if (rows.rows() == 0) {
         if (n != 1) {
             scene.note("no reduced inertia", std::to_string(n) + " independent motions, not one rigid train");
             return;
         }
-        v = Eigen::VectorXd::Ones(1);
+        v = ::Eigen::VectorXd::Ones(1);
     } else {
-        Eigen::FullPivLU<Eigen::MatrixXd> lu(rows);
+        ::Eigen::FullPivLU<::Eigen::MatrixXd> lu(rows);
         lu.setThreshold(1e-10);
-        const Eigen::MatrixXd kernel = lu.kernel();
+        const ::Eigen::MatrixXd kernel = lu.kernel();
         if (lu.dimensionOfKernel() != 1) {
             scene.note("no reduced inertia", std::to_string(lu.dimensionOfKernel()) +
                                                  " independent rigid motions, not one rigid train");
