@@ -8,6 +8,7 @@
 namespace milldyn {
 
 inline std::string formatNumber(double value, int significantDigits = 6) {
+    if (value == 0) value = 0;  // "0", not "-0"
     std::ostringstream s;
     s.precision(significantDigits);
     s << value;
