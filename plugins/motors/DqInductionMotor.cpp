@@ -64,8 +64,7 @@ Complex DqInductionMotor::calcSupplyVoltage(double t) const {
 
 double DqInductionMotor::calcVoltageFactor(const SimTK::State& s) const {
     // Star–delta's torque factor 1/3 (Starter) is u² on the windings.
-    const SupplyState u =
-        isStarterFinished(s) ? m_starter.finalSupply() : m_starter.supply(s.getTime(), getStarterStep(s));
+    const SupplyState u = m_starter.supply(s.getTime(), getStarterStep(s), isStarterFinished(s));
     return u.voltage * std::sqrt(u.connection);
 }
 
@@ -80,12 +79,7 @@ double DqInductionMotor::calcLineCurrent(const SimTK::State& s) const {
 }
 
 StartSequenceState DqInductionMotor::calcStarterProgress(const SimTK::State& s) const {
-    if (isStarterFinished(s)) {
-        StartSequenceState q;
-        q.text = Starter::kindName(m_params.starter.kind) + " starter ended (the run started from steady running)";
-        return q;
-    }
-    return m_starter.progress(s.getTime(), getStarterStep(s), 1.0, false);
+    return m_starter.progress(s.getTime(), getStarterStep(s), isStarterFinished(s));
 }
 
 void DqInductionMotor::finishStarter(SimTK::State& s) const {

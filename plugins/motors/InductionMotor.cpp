@@ -118,8 +118,7 @@ double InductionMotor::currentAtSpeed(double omega, const SupplyState& u) const 
 }
 
 SupplyState InductionMotor::supply(const SimTK::State& state) const {
-    SupplyState u = isStarterFinished(state) ? m_starter.finalSupply()
-                                             : m_starter.supply(state.getTime(), getStarterStep(state));
+    SupplyState u = m_starter.supply(state.getTime(), getStarterStep(state), isStarterFinished(state));
     if (isConverter()) u.frequency = converterFrequency(state);
     return u;
 }
@@ -210,13 +209,8 @@ double InductionMotor::calcCurrent(const SimTK::State& state) const {
 }
 
 StartSequenceState InductionMotor::calcStarterProgress(const SimTK::State& state) const {
-    if (isStarterFinished(state)) {
-        StartSequenceState q;
-        q.text = Starter::kindName(m_params.starter.kind) + " starter ended (the run started from steady running)";
-        if (!isConverter() || converterFrequency(state) >= 1) return q;
-    }
-    return m_starter.progress(state.getTime(), getStarterStep(state), isConverter() ? converterFrequency(state) : 1.0,
-                              isRampHeld(state), m_holdByCurrent);
+    return m_starter.progress(state.getTime(), getStarterStep(state), isStarterFinished(state),
+                              isConverter() ? converterFrequency(state) : 1.0, isRampHeld(state), m_holdByCurrent);
 }
 
 void InductionMotor::finishStarter(SimTK::State& state) const {

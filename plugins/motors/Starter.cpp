@@ -83,12 +83,20 @@ SupplyState Starter::supply(double t, int step) const {
     return s;
 }
 
-StartSequenceState Starter::progress(double t, int step, double frequency, bool rampHeld, bool heldByCurrent) const {
+StartSequenceState Starter::progress(double t, int step, bool ended, double frequency, bool rampHeld,
+                                     bool heldByCurrent) const {
     using K = StarterParams::Kind;
     const StarterParams& p = m_params;
     StartSequenceState q;
+    // Ended for good (a converter still holding below rated frequency is not).
+    if (ended && frequency >= 1) {
+        q.text = kindName(p.kind) + " starter ended (the run started from steady running)";
+        return q;
+    }
     const double rampDone = p.rampTime > 0 ? std::min(std::max(t, 0.0) / p.rampTime, 1.0) : 1.0;
-    const std::string rampText = formatNumber(100 * rampDone, 3) + " % of its " + formatNumber(p.rampTime) + " s ramp";
+    const auto rampText = [&] {
+        return formatNumber(100 * rampDone, 3) + " % of its " + formatNumber(p.rampTime) + " s ramp";
+    };
     // The pending switch of a stepped starter, by time or by the shaft's speed.
     const auto nextSwitch = [&]() -> std::string {
         const std::size_t i = static_cast<std::size_t>(step);
@@ -109,7 +117,7 @@ StartSequenceState Starter::progress(double t, int step, double frequency, bool 
             q.finished = rampDone >= 1;
             q.text = q.finished ? "soft start at full voltage since " + formatNumber(p.rampTime) + " s"
                                 : "soft start at V = " + formatNumber(ramp(p.initialVoltage, t, p.rampTime), 4) +
-                                      " of rated, " + rampText;
+                                      " of rated, " + rampText();
             break;
         case K::FrequencyConverter:
             q.finished = frequency >= 1;
@@ -135,7 +143,7 @@ StartSequenceState Starter::progress(double t, int step, double frequency, bool 
             q.finished = rampDone >= 1;
             q.text = q.finished ? "liquid-resistance starter shorted since " + formatNumber(p.rampTime) + " s"
                                 : "liquid-resistance starter at R/R_rotor = " +
-                                      formatNumber(ramp(p.initialResistanceRatio, t, p.rampTime), 4) + ", " + rampText;
+                                      formatNumber(ramp(p.initialResistanceRatio, t, p.rampTime), 4) + ", " + rampText();
             break;
     }
     return q;

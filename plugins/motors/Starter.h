@@ -72,19 +72,23 @@ public:
     /// The supply once the sequence has ended: delta, full voltage, rated
     /// frequency (with the converter's torque limit), rotor short-circuited.
     SupplyState finalSupply() const { return supply(std::numeric_limits<double>::max(), switchCount()); }
+    /// supply(time, step), or finalSupply() once the sequence was `ended`
+    /// for good (steady running, whatever the time).
+    SupplyState supply(double time, int step, bool ended) const { return ended ? finalSupply() : supply(time, step); }
     /// Frequency converter: the ramp generator's output [-] at `time` [s]
     /// when it (re)started from `fromFrequency` at `fromTime`:
     /// min(1, f_r + R·(t − t_r)), R = rampRate().
     double rampFrequency(double time, double fromFrequency, double fromTime) const;
     /// Frequency converter: the ramp's rate R = (1 − f0)/T [1/s].
     double rampRate() const { return (1 - m_params.initialFrequency) / m_params.rampTime; }
-    /// Where the starting sequence stands at `time` [s] in step `step`, with
-    /// the converter's output frequency f/f_rated [-], whether its ramp is
-    /// held and whether the hold is the current limit's (else the torque
-    /// limit's): finished once the supply is full (delta, full voltage,
-    /// full frequency, rotor short-circuited); it waits on the shaft while a
-    /// switch at a speed is pending or the ramp is held.
-    StartSequenceState progress(double time, int step, double frequency, bool rampHeld,
+    /// Where the starting sequence stands at `time` [s] in step `step` (or
+    /// `ended` for good: steady running), with the converter's output
+    /// frequency f/f_rated [-], whether its ramp is held and whether the hold
+    /// is the current limit's (else the torque limit's): finished once the
+    /// supply is full (delta, full voltage, full frequency, rotor
+    /// short-circuited); it waits on the shaft while a switch at a speed is
+    /// pending or the ramp is held.
+    StartSequenceState progress(double time, int step, bool ended, double frequency = 1, bool rampHeld = false,
                                 bool heldByCurrent = false) const;
     /// Number of switches (steps after the first).
     int switchCount() const;
