@@ -1,7 +1,7 @@
 #include "driver/Simulation.h"
-#include "plugins/scene/Format.h"
 
 #include "plugins/scene/EnergyMeter.h"
+#include "plugins/scene/Format.h"
 
 #include <Eigen/Dense>
 
@@ -928,10 +928,11 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
     auto residual = [&](const Eigen::VectorXd& x) {
         SimTK::State s = state;
         setX(s, x);
+        // Elements' own states (a dq machine's fluxes) at this trial's running.
+        for (const auto& f : scene.steadyInitializers()) f(s);
         // Kept reactions (journal loads) consistent with each trial state: a
         // journal's friction at steady running is its running load's, not the
         // zero load of a state never realized (the Kloss speed without it).
-        for (const auto& f : scene.steadyInitializers()) f(s);
         settleLaggedValues(scene, s);
         system.realize(s, SimTK::Stage::Acceleration);
         Eigen::VectorXd r(nr);

@@ -2,8 +2,8 @@
 // drives off when scheduled, and summarise steady running and run-out.
 
 #include "driver/SceneBuilder.h"
-#include "plugins/scene/Format.h"
 #include "driver/analyses/Analysis.h"
+#include "plugins/scene/Format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -188,7 +188,8 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
         result.verdict = "unfinished";
         result.verdictText = "start unfinished: " + body.name + " was at " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
                              " rpm) at " + fmt(h.tEnd) + " s and not held " + h.holdText + " (it moved by up to " +
-                             fmt(h.worst) + " rad/s)" + (waiting.empty() ? "" : "; the starting sequence waits on the shaft (" + waiting + ")") +
+                             fmt(h.worst) + " rad/s)" +
+                             (waiting.empty() ? "" : "; the starting sequence waits on the shaft (" + waiting + ")") +
                              ": no start time or steady values are given; lengthen end_time";
     }
     result.results.push_back({"start_completed", result.verdict == "completed" ? 1.0 : 0.0, "1",
@@ -238,7 +239,8 @@ void judgeRun(const Scene& scene, const ModelSpec& spec, const SceneBody& body, 
         }
         result.verdict = h.held ? "steady_held" : "ran";
         result.verdictText = (h.held ? "steady held: " : "ran, not steady at the end: ") + began + "; " + heldText +
-                             (seq.waiting.empty() ? "" : "; the starting sequence waits on the shaft (" + seq.waiting + ")") +
+                             (seq.waiting.empty() ? ""
+                                                  : "; the starting sequence waits on the shaft (" + seq.waiting + ")") +
                              ref;
         return;
     }

@@ -1,8 +1,8 @@
 #include "plugins/motors/InductionMotor.h"
-#include "plugins/motors/StarterEvents.h"
-#include "plugins/scene/Format.h"
 
+#include "plugins/motors/StarterEvents.h"
 #include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/Format.h"
 
 #include <algorithm>
 #include <cmath>

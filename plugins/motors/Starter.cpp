@@ -101,8 +101,9 @@ StartSequenceState Starter::progress(double t, int step, bool ended, double freq
     const auto nextSwitch = [&]() -> std::string {
         const std::size_t i = static_cast<std::size_t>(step);
         if (switchesBySpeed())
-            return i < p.switchSpeeds.size() ? "waits for the shaft to reach " + formatNumber(p.switchSpeeds[i]) + " rad/s"
-                                             : "";
+            return i < p.switchSpeeds.size()
+                       ? "waits for the shaft to reach " + formatNumber(p.switchSpeeds[i]) + " rad/s"
+                       : "";
         return i < p.switchTimes.size() ? "switches at " + formatNumber(p.switchTimes[i]) + " s" : "";
     };
     switch (p.kind) {
@@ -123,9 +124,9 @@ StartSequenceState Starter::progress(double t, int step, bool ended, double freq
             q.finished = frequency >= 1;
             q.waitsOnShaft = !q.finished && rampHeld;
             q.text = q.finished ? "frequency converter at rated frequency"
-                                : std::string("frequency converter at f = ") + formatNumber(frequency, 4) +
-                                      " of rated, " +
-                                      (rampHeld ? std::string("its ramp held at the ") + (heldByCurrent ? "current" : "torque") + " limit"
+                                : "frequency converter at f = " + formatNumber(frequency, 4) + " of rated, " +
+                                      (rampHeld ? std::string("its ramp held at the ") +
+                                                      (heldByCurrent ? "current" : "torque") + " limit"
                                                 : "ramping (" + formatNumber(rampRate() * 100, 4) + " % of rated per s)");
             break;
         case K::RotorResistance: {
