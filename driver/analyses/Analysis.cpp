@@ -3,6 +3,7 @@
 #include "driver/ModelFile.h"
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/EnergyMeter.h"
+#include "plugins/scene/Format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -270,6 +271,19 @@ AnalysisResult dispatchAnalysis(const ModelSpec& spec, const ProgressFn& progres
             if (e.type == "SegmentCharge" && e.text("motion") == "held")
                 throw e.error("motion", "a held charge is a kinetostatic model; analysis '" + spec.scenario.type +
                                             "' needs motion: with_drum or dynamic_lag");
+    // A charge's initial_speed_fraction sets the drum's speed at t = 0: only
+    // a transient from the file's state keeps it (rest zeroes it, steady
+    // running solves it).
+    for (const auto& e : spec.elements)
+        if (e.type == "SegmentCharge" && e.params.count("initial_speed_fraction") &&
+            e.params.at("initial_speed_fraction").given &&
+            !(spec.scenario.type == "transient" && spec.scenario.text("initial_state") == "file"))
+            throw e.error("initial_speed_fraction", "sets the drum's speed at t = 0, which only a transient with "
+                                                    "initial_state: file keeps");
+    for (const auto& e : spec.elements)
+        if (e.type == "SegmentCharge" && e.text("motion") == "frozen" && spec.scenario.type != "transient")
+            throw e.error("motion", "a frozen charge is lifted and released along a run: analysis '" +
+                                        spec.scenario.type + "' needs another motion (transient only)");
     if (spec.scenario.type == "transient") return runTransient(spec, progress, observer);
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
     if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
@@ -282,11 +296,65 @@ AnalysisResult dispatchAnalysis(const ModelSpec& spec, const ProgressFn& progres
 
 }  // namespace
 
+namespace {
+/// Tumbling-mill charges (SegmentCharge torque_arm, frozen): a warning when
+/// the drum ran above 90 % of its critical speed, and a frozen charge's
+/// outcome against its safe angle (docs/charges.md).
+void addChargeChecks(const ModelSpec& spec, AnalysisResult& result) {
+    for (const auto& e : spec.elements) {
+        if (e.type != "SegmentCharge") continue;
+        const std::size_t phiColumn = result.findColumn(e.name + ".fraction_of_critical");
+        if (phiColumn != std::string::npos && !result.rows.empty()) {
+            double top = 0;
+            for (const auto& row : result.rows) top = std::max(top, std::abs(row[phiColumn]));
+            if (top > 0.9)
+                result.notes.push_back("warning: charge " + e.name + " ran at up to " + formatNumber(100 * top, 4) +
+                                       " % of its critical speed (above 90 %: the charge nears centrifuging)");
+        }
+        if (e.text("motion") != "frozen") continue;
+        const std::size_t released = result.findColumn(e.name + ".released");
+        const std::size_t reached = result.findColumn(e.name + ".angle_reached");
+        if (released == std::string::npos || reached == std::string::npos || result.rows.empty()) continue;
+        const auto& last = result.rows.back();
+        const bool fell = last[released] > 0.5;
+        const double angle = last[reached], safe = e.number("safe_angle"), release = e.number("release_angle");
+        const ResultScalar* mass = nullptr;
+        const ResultScalar* radius = nullptr;
+        for (const auto& d : result.derived) {
+            if (d.name == e.name + ".mass") mass = &d;
+            if (d.name == e.name + ".centroid_radius") radius = &d;
+        }
+        result.results.push_back({e.name + ".angle_reached", angle, "rad",
+                                  "largest lag of the packed charge (the release angle once it fell)"});
+        result.results.push_back({e.name + ".released", fell ? 1.0 : 0.0, "1", "1: the packed charge broke loose"});
+        if (mass && radius) {
+            const double g = std::hypot(spec.gravity[0], spec.gravity[1]);
+            const double fall = fell ? mass->value * g * radius->value * (1 - std::cos(release)) : 0.0;
+            result.results.push_back({e.name + ".fall_energy", fall, "J", "m g r_c (1 − cos θ_r) of the fall, 0 if none"});
+        }
+        const std::string deg = " deg";
+        std::string verdict;
+        if (angle > safe)
+            verdict = "unsafe: the shell lifted the packed charge " + e.name + " to " +
+                      formatNumber(angle * 180 / M_PI, 4) + deg + ", past the safe angle " +
+                      formatNumber(safe * 180 / M_PI, 4) + deg +
+                      " (frozen-charge protection trips the drive there)" + (fell ? ", then it fell" : "");
+        else
+            verdict = "safe: charge " + e.name + (fell ? " broke loose at " : " was lifted to ") +
+                      formatNumber(angle * 180 / M_PI, 4) + deg + ", within the safe angle " +
+                      formatNumber(safe * 180 / M_PI, 4) + deg;
+        result.notes.push_back("frozen charge: " + verdict);
+    }
+}
+}  // namespace
+
 AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     // Simbody reports refused calls (a singular assembly, a bad argument) as
     // SimTK::Exception::Base: one located line, never "internal error".
     try {
-        return dispatchAnalysis(spec, progress, observer);
+        AnalysisResult result = dispatchAnalysis(spec, progress, observer);
+        addChargeChecks(spec, result);
+        return result;
     } catch (const SimTK::Exception::Base& e) {
         throw AnalysisError(spec.scenario.type + " analysis of " + spec.name + ": Simbody refused it: " +
                             simbodyMessage(e.what()));

@@ -292,6 +292,12 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
                                         (sc.text("zero_dof") == "integrate" ? std::string("zero_dof is integrate")
                                                                             : sim.replayReason()) +
                                         "); use motion: with_drum or dynamic_lag");
+    // A frozen charge's release is a latch carried from step to step; a
+    // replay places each sample from the time alone and would never latch.
+    for (const auto& e : spec.elements)
+        if (e.type == "SegmentCharge" && e.text("motion") == "frozen" && sim.isReplay())
+            throw e.error("motion", "frozen: the release is carried from step to step, and this run would be "
+                                    "replayed (" + sim.replayReason() + "): set scenario.zero_dof: integrate");
     const SimTK::State first = sim.state();
 
     // Summary at the last sample before the first switch-off: steady running.

@@ -1,10 +1,12 @@
 #include "plugins/charges/SegmentCharge.h"
 
+#include "plugins/charges/ChargePowerLaw.h"
 #include "plugins/charges/CircularSegment.h"
 
 #include <cstdio>
 
 #include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/Format.h"
 
 #include <algorithm>
 #include <map>
@@ -48,6 +50,24 @@ SegmentCharge::SegmentCharge(const SimbodyMatterSubsystem& matter, const Mobiliz
     if (p.motion == ChargeMotionMode::TorqueArm) {
         if (!(p.gravity.norm() > 0)) bad("motion: torque_arm needs gravity (the charge's weight is its load)");
         if (!(p.smoothingSpeed > 0) || !std::isfinite(p.smoothingSpeed)) bad("smoothing_speed must be > 0 rad/s");
+        // The lag laws: a lag from the downward vertical in the turning
+        // sense, between hanging (0) and level with the axis (90°).
+        auto lagInRange = [](double a) { return a >= 0 && a <= M_PI / 2; };
+        if (p.powerLaw == ChargePowerLaw::Lag) {
+            if (!lagInRange(p.lag)) bad("lag must be in [0, 90] deg");
+            for (double a : p.lagTableLag)
+                if (!lagInRange(a)) bad("lag_table_lag entries must be in [0, 90] deg");
+        }
+        if (!(p.startSpeedFraction > 0) || !std::isfinite(p.startSpeedFraction))
+            bad("start_speed_fraction must be > 0");
+        if (!std::isfinite(p.ballSizeFactor)) bad("ball_size_factor must be finite");
+    }
+    if (p.motion == ChargeMotionMode::Frozen) {
+        if (!(p.gravity.norm() > 0)) bad("motion: frozen needs gravity (the block's weight is its load)");
+        if (!(p.releaseAngle > 0 && p.releaseAngle < M_PI)) bad("release_angle must be in (0, 180) deg");
+        if (!(p.safeAngle > 0 && p.safeAngle < M_PI)) bad("safe_angle must be in (0, 180) deg");
+        if (!(p.frozenInitialLag > -M_PI && p.frozenInitialLag < p.releaseAngle))
+            bad("initial_lag must be in (-180 deg, release_angle)");
     }
 }
 
@@ -105,8 +125,41 @@ double SegmentCharge::calcLagAtSpeedFraction(double phi) const {
     return h00 * y[k] + h10 * h * m[k] + h01 * y[k + 1] + h11 * h * m[k + 1];
 }
 
+double SegmentCharge::calcUnbalanceMoment() const {
+    // |g| in the plane of the cross-section: the weight's moment arm is there.
+    return calcMass() * calcCentroidDistance() * std::hypot(m_p.gravity[0], m_p.gravity[1]);
+}
+
+double SegmentCharge::calcLawPower(double phi) const {
+    const double omega = phi * calcCriticalSpeed();
+    switch (m_p.powerLaw) {
+        case ChargePowerLaw::Bond:
+            return calcMass() * charge_power::calcBondSpecificPower(2 * m_p.drumRadius, calcFillFraction(m_p.halfAngle),
+                                                                   phi, m_p.ballSizeFactor);
+        case ChargePowerLaw::MorrellC:
+            return charge_power::calcMorrellNetPower(m_p.drumRadius, m_p.length, m_p.bulkDensity,
+                                                     calcFillFraction(m_p.halfAngle), phi, m_p.gravity.norm());
+        case ChargePowerLaw::Lag: break;
+    }
+    return calcUnbalanceMoment() * std::sin(calcLagAtSpeedFraction(phi)) * omega;
+}
+
+double SegmentCharge::calcLawTorque(double phi) const {
+    if (m_p.powerLaw == ChargePowerLaw::Lag) return calcUnbalanceMoment() * std::sin(calcLagAtSpeedFraction(phi));
+    // Start rule: below φ_s the torque stays at its φ_s value (P/ω has no
+    // value at ω = 0; a charge carried up to its running lag from the first
+    // turn loads the shell so).
+    const double held = std::max(std::abs(phi), m_p.startSpeedFraction);
+    return calcLawPower(held) / (held * calcCriticalSpeed());
+}
+
 double SegmentCharge::calcTorqueArmLag(double omega) const {
-    return calcLagAtSpeedFraction(std::abs(omega) / calcCriticalSpeed()) * std::tanh(omega / m_p.smoothingSpeed);
+    const double phi = std::abs(omega) / calcCriticalSpeed();
+    if (m_p.powerLaw == ChargePowerLaw::Lag) return calcLagAtSpeedFraction(phi) * std::tanh(omega / m_p.smoothingSpeed);
+    // A correlation's equivalent lag: the torque arm that gives its torque
+    // (the builder checks it stays below 90°).
+    const double ratio = std::min(1.0, calcLawTorque(phi) / calcUnbalanceMoment());
+    return std::asin(ratio) * std::tanh(omega / m_p.smoothingSpeed);
 }
 
 double SegmentCharge::calcTorqueArmTorque(double omega) const {
@@ -114,14 +167,72 @@ double SegmentCharge::calcTorqueArmTorque(double omega) const {
     // vertical d: the z component of (r_c u) × (m g) is
     // m r_c |g| (cos(d + α) sin d − sin(d + α) cos d) = −m r_c |g| sin α,
     // |g| the gravity in the plane of the cross-section.
-    const double gPlane = std::hypot(m_p.gravity[0], m_p.gravity[1]);
-    return -calcMass() * calcCentroidDistance() * gPlane * std::sin(calcTorqueArmLag(omega));
+    if (m_p.powerLaw == ChargePowerLaw::Lag) return -calcUnbalanceMoment() * std::sin(calcTorqueArmLag(omega));
+    // A correlation: T = P/ω, odd and smooth through standstill.
+    const double phi = std::abs(omega) / calcCriticalSpeed();
+    return -calcLawTorque(phi) * std::tanh(omega / m_p.smoothingSpeed);
+}
+
+double SegmentCharge::calcFractionOfCritical(const State& s) const {
+    return calcDrumSpeed(s) / calcCriticalSpeed();
+}
+
+double SegmentCharge::calcFrozenLag(const State& s) const {
+    const double hang = Value<Real>::downcast(m_matter.getDiscreteVariable(s, m_hangAngle));
+    return m_drum.getOneQ(s, kQ) - hang;
+}
+
+bool SegmentCharge::isReleased(const State& s) const {
+    return Value<Real>::downcast(m_matter.getDiscreteVariable(s, m_released)) > 0.5;
+}
+
+double SegmentCharge::getAngleReached(const State& s) const {
+    return Value<Real>::downcast(m_matter.getDiscreteVariable(s, m_angleReached));
+}
+
+double SegmentCharge::calcFrozenTorque(const State& s) const {
+    if (isReleased(s)) return 0;
+    const double theta = calcFrozenLag(s);
+    // Beyond θ_r the block has broken loose: no moment, even inside the step
+    // whose end latches the release (the integrator's error control sees the
+    // step in the torque and shortens its step there).
+    if (theta >= m_p.releaseAngle) return 0;
+    return -calcUnbalanceMoment() * std::sin(theta);
+}
+
+double SegmentCharge::calcFrozenLatch(const State& s) const {
+    return isReleased(s) || calcFrozenLag(s) >= m_p.releaseAngle ? 1.0 : 0.0;
+}
+
+double SegmentCharge::updateFrozenLatch(State& s) const {
+    const double latch = calcFrozenLatch(s);
+    const bool was = isReleased(s);
+    double& reached = Value<Real>::updDowncast(m_matter.updDiscreteVariable(s, m_angleReached));
+    if (latch > 0.5) {
+        reached = std::max(reached, m_p.releaseAngle);
+    } else {
+        reached = std::max(reached, calcFrozenLag(s));
+    }
+    if ((latch > 0.5) == was) return 0;
+    Value<Real>::updDowncast(m_matter.updDiscreteVariable(s, m_released)) = latch;
+    return 1;
+}
+
+void SegmentCharge::setFrozenStart(State& s) const {
+    Value<Real>::updDowncast(m_matter.updDiscreteVariable(s, m_hangAngle)) =
+        m_drum.getOneQ(s, kQ) - m_p.frozenInitialLag;
+    Value<Real>::updDowncast(m_matter.updDiscreteVariable(s, m_released)) = 0;
+    Value<Real>::updDowncast(m_matter.updDiscreteVariable(s, m_angleReached)) = m_p.frozenInitialLag;
 }
 
 double SegmentCharge::calcDrumSpeed(const State& s) const { return m_drum.getBodyAngularVelocity(s)[2]; }
 
 void SegmentCharge::realizeTopology(State& s) const {
     m_heldTorque = m_matter.allocateDiscreteVariable(s, Stage::Dynamics, new Value<Real>(0.0));
+    m_hangAngle = m_matter.allocateDiscreteVariable(s, Stage::Dynamics, new Value<Real>(0.0));
+    m_released = m_matter.allocateDiscreteVariable(s, Stage::Dynamics, new Value<Real>(0.0));
+    // Read by an output only: changing it invalidates nothing the motion uses.
+    m_angleReached = m_matter.allocateDiscreteVariable(s, Stage::Report, new Value<Real>(0.0));
 }
 
 double SegmentCharge::getHeldTorque(const State& s) const {
@@ -138,6 +249,7 @@ double SegmentCharge::calcDirection(const State& s) const {
     // frame.
     if (m_p.motion == ChargeMotionMode::WithDrum) return absoluteAngle(s, m_drum) + m_p.initialDirection;
     if (m_p.motion == ChargeMotionMode::TorqueArm) return calcDirectionOfLag(s, calcTorqueArmLag(calcDrumSpeed(s)));
+    if (m_p.motion == ChargeMotionMode::Frozen) return calcDirectionOfLag(s, calcLag(s));
     // The body's mass centre lies on its −y axis.
     const Vec3 down = -m_charge.getBodyRotation(s).y();
     return std::atan2(down[1], down[0]);
@@ -158,6 +270,8 @@ double SegmentCharge::calcDownAngle() const {
 
 double SegmentCharge::calcLag(const State& s) const {
     if (m_p.motion == ChargeMotionMode::TorqueArm) return calcTorqueArmLag(calcDrumSpeed(s));
+    // Frozen: the block's lag while packed; once fallen it hangs (0).
+    if (m_p.motion == ChargeMotionMode::Frozen) return isReleased(s) ? 0.0 : wrapAngle(calcFrozenLag(s));
     if (m_p.lagFrom == LagReference::Vertical) return wrapAngle(calcDirection(s) - calcDownAngle());
     Vec3 out = m_drum.getBodyOriginLocation(s) - m_carrier.getBodyOriginLocation(s);
     out[2] = 0;
@@ -175,7 +289,8 @@ double SegmentCharge::calcRelativeAngleFor(const State& s, double direction) con
 
 double SegmentCharge::calcSlipSpeed(const State& s) const {
     if (m_p.motion == ChargeMotionMode::WithDrum) return 0;
-    if (m_p.motion == ChargeMotionMode::TorqueArm) return calcDrumSpeed(s);  // the charge stands still
+    if (m_p.motion == ChargeMotionMode::TorqueArm || m_p.motion == ChargeMotionMode::Frozen)
+        return calcDrumSpeed(s);  // the charge stands still (torque arm) or the couple turns with the shell
     return -m_charge.getOneU(s, kU);  // the charge's pin is on the drum
 }
 
@@ -185,6 +300,7 @@ double SegmentCharge::calcWallTorque(const State& s) const {
         case ChargeMotionMode::Held: return getHeldTorque(s);
         case ChargeMotionMode::DynamicLag: return m_p.wallDrag * calcSlipSpeed(s);
         case ChargeMotionMode::TorqueArm: return -calcTorqueArmTorque(calcDrumSpeed(s));
+        case ChargeMotionMode::Frozen: return -calcFrozenTorque(s);
     }
     return 0;
 }
@@ -196,6 +312,10 @@ void SegmentCharge::calcForce(const State& s, Vector_<SpatialVec>& bodyForces, V
         // The couple that moves the weight's line of action from the axis
         // (where the shell's mass properties carry it) to the centroid.
         m_drum.applyBodyTorque(s, Vec3(0, 0, calcTorqueArmTorque(calcDrumSpeed(s))), bodyForces);
+        return;
+    }
+    if (m_p.motion == ChargeMotionMode::Frozen) {
+        m_drum.applyBodyTorque(s, Vec3(0, 0, calcFrozenTorque(s)), bodyForces);
         return;
     }
     // A mobility force on the charge's pin: drum on charge, and the opposite
@@ -212,7 +332,9 @@ const std::map<std::string, std::set<std::string>>& keysOfMotion() {
         {"with_drum", {"initial_direction"}},
         {"held", {"lag"}},
         {"dynamic_lag", {"wall_drag", "initial_direction", "initial_lag"}},
-        {"torque_arm", {"lag", "lag_table_speed", "lag_table_lag", "smoothing_speed"}},
+        {"torque_arm", {"lag", "lag_table_speed", "lag_table_lag", "smoothing_speed", "power_law", "ball_size_factor",
+                        "start_speed_fraction", "initial_speed_fraction"}},
+        {"frozen", {"release_angle", "safe_angle", "initial_lag", "initial_speed_fraction"}},
     };
     return keys;
 }
@@ -239,6 +361,7 @@ ChargeMotionMode motionOf(const std::string& word) {
     if (word == "held") return ChargeMotionMode::Held;
     if (word == "dynamic_lag") return ChargeMotionMode::DynamicLag;
     if (word == "torque_arm") return ChargeMotionMode::TorqueArm;
+    if (word == "frozen") return ChargeMotionMode::Frozen;
     return ChargeMotionMode::WithDrum;
 }
 
@@ -275,6 +398,28 @@ void addToDrum(MobilizedBody& drumBody, double m, const Vec3& comInDrum, double 
         MassProperties(total, (d.getMass() * d.getMassCenter() + m * comInDrum) / total, aboutOrigin));
 }
 
+/// A correlation must give a charge and a torque the torque arm can carry
+/// (an equivalent lag of at most 90°) from φ_s up to 150 % of critical.
+void checkCorrelation(const ElementSpec& spec, const SegmentCharge& c) {
+    const SegmentChargeParams& p = c.params();
+    const double top = 1.5, from = p.startSpeedFraction;
+    for (int i = 0; i <= 400 && from < top; ++i) {
+        const double phi = from + (top - from) * i / 400;
+        const double torque = c.calcLawTorque(phi);
+        const std::string at = "at fill " + formatNumber(100 * SegmentCharge::calcFillFraction(p.halfAngle)) + " % and " +
+                               formatNumber(100 * phi) + " % of critical speed";
+        if (!std::isfinite(torque))
+            throw spec.error("fill", "power_law " + spec.text("power_law") + " has no charge " + at +
+                                         " (Morrell's 2 pi beta J exceeds the bed's angle): lower the fill or raise "
+                                         "start_speed_fraction");
+        if (torque > c.calcUnbalanceMoment())
+            throw spec.error("power_law", spec.text("power_law") + " asks " + formatNumber(torque) + " N*m " + at +
+                                              ", more than the charge's weight can give at 90 deg lag (m g r_c = " +
+                                              formatNumber(c.calcUnbalanceMoment()) +
+                                              " N*m): check bulk_density and fill");
+    }
+}
+
 void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     checkKeysOfMotion(spec);
     // Copies, not a pointer into the scene's body list: adding the charge's
@@ -304,6 +449,18 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     if (p.motion == ChargeMotionMode::TorqueArm && p.lagFrom != LagReference::Vertical)
         throw spec.error("lag_from", "motion: torque_arm holds the charge at a lag from the vertical (the weight's "
                                      "torque arm): use lag_from: vertical");
+    if (p.motion == ChargeMotionMode::Frozen && p.lagFrom != LagReference::Vertical)
+        throw spec.error("lag_from", "motion: frozen lifts the block from the downward vertical: use lag_from: vertical");
+    if (p.motion == ChargeMotionMode::Frozen && !carrier.isGround())
+        throw spec.error("motion", "frozen: drum '" + drum.name + "' must turn on a pin on ground (its angle is the "
+                                   "block's lift)");
+    const std::string& law = spec.text("power_law");
+    p.powerLaw = law == "bond" ? ChargePowerLaw::Bond : law == "morrell_c" ? ChargePowerLaw::MorrellC : ChargePowerLaw::Lag;
+    p.ballSizeFactor = spec.number("ball_size_factor");
+    p.startSpeedFraction = spec.number("start_speed_fraction");
+    p.releaseAngle = spec.number("release_angle");
+    p.safeAngle = spec.number("safe_angle");
+    if (p.motion == ChargeMotionMode::Frozen) p.frozenInitialLag = spec.number("initial_lag");
     p.lag = spec.number("lag");
     p.initialDirection = spec.number("initial_direction");
     p.wallDrag = spec.number("wall_drag");
@@ -312,13 +469,15 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         p.lagTableSpeed = spec.numbers("lag_table_speed");
         p.lagTableLag = spec.numbers("lag_table_lag");
     }
-    if (p.motion == ChargeMotionMode::TorqueArm && !(p.gravity.norm() > 0))
-        throw spec.error("motion", "torque_arm: the charge's weight is its load, and the model has no gravity");
+    if ((p.motion == ChargeMotionMode::TorqueArm || p.motion == ChargeMotionMode::Frozen) && !(p.gravity.norm() > 0))
+        throw spec.error("motion", motion + ": the charge's weight is its load, and the model has no gravity");
     const double criticalSpeed = std::sqrt(p.gravity.norm() / p.drumRadius);
     p.smoothingSpeed = spec.params.at("smoothing_speed").given ? spec.number("smoothing_speed") : 0.02 * criticalSpeed;
     const bool initialLagGiven = spec.params.at("initial_lag").given;
     const double initialLag = spec.number("initial_lag");
     auto* impl = new SegmentCharge(scene.matter(), carrier, drum.mobod, p);
+    if (p.motion == ChargeMotionMode::TorqueArm && p.powerLaw != ChargePowerLaw::Lag)
+        checkCorrelation(spec, *impl);
 
     const double m = impl->calcMass(), lc = impl->calcCentroidDistance();
     // k_c m r², not J_axis − m l_c² (two nearly equal numbers for a thin charge)
@@ -337,9 +496,10 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         // lag follows from the drum's angle).
         addToDrum(drumBody, m, Vec3(lc * std::cos(p.initialDirection), lc * std::sin(p.initialDirection), 0),
                   centralPolar);
-    } else if (p.motion == ChargeMotionMode::TorqueArm) {
+    } else if (p.motion == ChargeMotionMode::TorqueArm || p.motion == ChargeMotionMode::Frozen) {
         // Mass and axis inertia on the shell's axis; the couple in calcForce
-        // moves the weight to the centroid.
+        // moves the weight to the centroid (frozen: the block turns with the
+        // shell, its polar moment about the axis is J_Bz too).
         addToDrum(drumBody, m, Vec3(0), impl->calcAxisInertia());
     } else {
         // The body's mass centre lies on its −y axis.
@@ -415,14 +575,35 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                     // Short enough for a plot's y axis.
                     vertical ? "lag from downward vertical, + turning (lag_from: vertical)"
                              : "lag from leading tangent to carrier radius (lag_from: carrier_radius)"});
-    if (p.motion == ChargeMotionMode::TorqueArm) {
+    const bool frozen = p.motion == ChargeMotionMode::Frozen;
+    if (p.motion == ChargeMotionMode::TorqueArm || frozen) {
         scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, Stage::Velocity,
                         [impl](const State& s) { return impl->calcWallTorque(s); }});
+        scene.addProbe({spec.name + ".fraction_of_critical", "1", ProbeRole::Generic, Stage::Velocity,
+                        [impl](const State& s) { return impl->calcFractionOfCritical(s); },
+                        "drum speed / critical speed sqrt(2g/D)"});
     } else {
         scene.addProbe({spec.name + ".wall_torque", "N*m", ProbeRole::Generic, Stage::Velocity,
                         [impl](const State& s) { return impl->calcWallTorque(s); }});
     }
-    if (p.motion != ChargeMotionMode::WithDrum) {
+    if (frozen) {
+        // Lifting the packed block stores m g Δh in it; its fall spends it
+        // (impact and heat in the charge): a load on the drive.
+        scene.addProbe({spec.name + ".lift_power", "W", ProbeRole::ResistancePower, Stage::Velocity,
+                        [impl](const State& s) { return impl->calcWallTorque(s) * impl->calcSlipSpeed(s); }});
+        scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load,
+                             [impl](const State& s) { return impl->calcWallTorque(s) * impl->calcSlipSpeed(s); },
+                             "lifting the packed charge (spent by its fall)"});
+        scene.addProbe({spec.name + ".released", "1", ProbeRole::Generic, Stage::Position,
+                        [impl](const State& s) { return impl->isReleased(s) ? 1.0 : 0.0; }});
+        scene.addProbe({spec.name + ".angle_reached", "rad", ProbeRole::Generic, Stage::Position,
+                        [impl](const State& s) { return impl->getAngleReached(s); },
+                        "largest lag of the packed block (step ends; release angle once released)"});
+        scene.addInitializer([impl](State& s) { impl->setFrozenStart(s); });
+        scene.addLaggedValue({spec.name + ".release", true,
+                              [impl](const State& s) { return impl->calcFrozenLatch(s); },
+                              [impl](State& s, double) { return impl->updateFrozenLatch(s); }});
+    } else if (p.motion != ChargeMotionMode::WithDrum) {
         scene.addProbe({spec.name + ".grinding_power", "W", ProbeRole::ResistancePower, Stage::Velocity,
                         [impl](const State& s) { return impl->calcWallTorque(s) * impl->calcSlipSpeed(s); }});
         scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load, [impl](const State& s) {
@@ -441,10 +622,41 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
         scene.addDerivedValue({spec.name + ".critical_speed", criticalSpeed, "rad/s",
                                "ω_c = sqrt(|g|/r) = sqrt(2|g|/D): a particle at the wall is held at the top "
                                "(ball radius neglected)"});
+    if (spec.params.at("initial_speed_fraction").given) {
+        if (!carrier.isGround())
+            throw spec.error("initial_speed_fraction", "drum '" + drum.name + "' must turn on a pin on ground");
+        const MobilizedBody d = drum.mobod;
+        const double speed = spec.number("initial_speed_fraction") * criticalSpeed;
+        scene.addInitializer([d, speed](State& s) { d.setOneU(s, kU, speed); });
+    }
+    if (p.motion == ChargeMotionMode::TorqueArm && p.powerLaw != ChargePowerLaw::Lag) {
+        scene.addDerivedValue({spec.name + ".start_torque", impl->calcLawTorque(0), "N*m",
+                               "the law's torque held below start_speed_fraction (P(φ_s)/(φ_s ω_c))"});
+    }
+    if (frozen) {
+        const double W = impl->calcUnbalanceMoment(), lc0 = lc;
+        const double tr = p.releaseAngle, ts = p.safeAngle;
+        scene.addDerivedValue({spec.name + ".unbalance_moment", W, "N*m", "m |g| r_c, the block's moment at 90 deg"});
+        scene.addDerivedValue({spec.name + ".release_torque", W * std::sin(tr), "N*m",
+                               "m |g| r_c sin θ_r, the block's moment as it breaks loose"});
+        scene.addDerivedValue({spec.name + ".fall_height", lc0 * (1 - std::cos(tr)), "m",
+                               "r_c (1 − cos θ_r), the centroid's drop from release to hanging"});
+        scene.addDerivedValue({spec.name + ".fall_energy", W * (1 - std::cos(tr)), "J",
+                               "m |g| r_c (1 − cos θ_r), the energy of the fall"});
+        scene.addDerivedValue({spec.name + ".safe_angle_torque", W * std::sin(ts), "N*m",
+                               "m |g| r_c sin θ_s, the moment at the protection's trip angle"});
+        scene.note("frozen charge " + spec.name,
+                   tr > ts ? "breaks loose at " + formatNumber(tr * 180 / M_PI) + " deg, past the safe angle " +
+                                 formatNumber(ts * 180 / M_PI) +
+                                 " deg: frozen-charge protection must trip the drive at the safe angle "
+                                 "(still packed there)"
+                           : "breaks loose at " + formatNumber(tr * 180 / M_PI) + " deg, within the safe angle " +
+                                 formatNumber(ts * 180 / M_PI) + " deg");
+    }
     scene.note(p.motion == ChargeMotionMode::WithDrum
                    ? "charge " + spec.name + " (SegmentCharge, with_drum) folded into " + drum.name
-               : p.motion == ChargeMotionMode::TorqueArm
-                   ? "charge " + spec.name + " (SegmentCharge, torque_arm) on " + drum.name + ", no body"
+               : p.motion == ChargeMotionMode::TorqueArm || frozen
+                   ? "charge " + spec.name + " (SegmentCharge, " + motion + ") on " + drum.name + ", no body"
                    : "body " + spec.name + " (SegmentCharge, " + motion + ")",
                "charge of " + drum.name + ": " + std::to_string(m) + " kg, centroid " + std::to_string(lc) +
                    " m from the axis, half-angle " + std::to_string(p.halfAngle * 180 / M_PI) + " deg" +
@@ -471,7 +683,7 @@ void registerSegmentCharge(ElementRegistry& registry) {
         P::quantity("bulk_density", "kg/m^3", "ρ: bulk density of balls, material and voids").above(0),
         P::quantity("fill", "1", "fill fraction of the cross-section (50 % = half disc)").optional(0.5).above(0).atMost(1),
         P::quantity("half_angle", "rad", "γ: segment half-angle (overrides fill)").optional(M_PI / 2).above(0).atMost(M_PI),
-        P::choice("motion", {"with_drum", "held", "dynamic_lag", "torque_arm"}, "how the charge moves")
+        P::choice("motion", {"with_drum", "held", "dynamic_lag", "torque_arm", "frozen"}, "how the charge moves")
             .optional(std::string("with_drum")),
         P::choice("lag_from", {"auto", "vertical", "carrier_radius"},
                   "what the lag is measured from (auto: vertical on a fixed axis, carrier_radius on a carrier)")
@@ -484,8 +696,27 @@ void registerSegmentCharge(ElementRegistry& registry) {
         P::quantity("smoothing_speed", "rad/s", "torque_arm: ω_ε of lag·tanh(ω/ω_ε) (default 2 % of ω_c)")
             .optional(0.0).above(0),
         P::quantity("initial_direction", "rad", "direction of B→c from +x at t = 0").optional(-M_PI / 2),
-        P::quantity("initial_lag", "rad", "dynamic_lag: lag at t = 0, in the lag_from convention")
+        P::quantity("initial_lag", "rad", "dynamic_lag, frozen: lag at t = 0, in the lag_from convention")
             .optional(0.0).atLeast(-M_PI).atMost(M_PI),
+        P::choice("power_law", {"lag", "bond", "morrell_c"},
+                  "torque_arm: what sets the load: the lag (or lag table), Bond's ball-mill power equation, "
+                  "Morrell's C-model net power")
+            .optional(std::string("lag")),
+        P::quantity("ball_size_factor", "W/kg", "power_law bond: S_s, Bond's ball-size term (kW per tonne of balls)")
+            .optional(0.0),
+        P::quantity("start_speed_fraction", "1",
+                    "power_law bond, morrell_c: below this fraction of critical speed the torque is held at its value "
+                    "there")
+            .optional(0.5).above(0).atMost(1),
+        P::quantity("initial_speed_fraction", "1",
+                    "torque_arm, frozen: the drum's speed at t = 0 as a fraction of critical speed (initial_state: "
+                    "file; overrides the drum's initial_speed)")
+            .optional(0.0).atLeast(-3).atMost(3),
+        P::quantity("release_angle", "rad", "frozen: lag of the packed block at which it breaks loose and falls")
+            .optional(0.0).above(0).below(M_PI),
+        P::quantity("safe_angle", "rad",
+                    "frozen: the protection's trip angle, the lag past which a packed charge must have fallen")
+            .optional(0.0).above(0).below(M_PI),
         P::quantity("wall_drag", "N*m*s/rad", "c_w of the wall drag (motion: dynamic_lag)").optional(0.0).atLeast(0),
     };
     s.crossCheck = [](const ElementSpec& e) {
@@ -494,6 +725,38 @@ void registerSegmentCharge(ElementRegistry& registry) {
             throw e.error("wall_drag", "motion: dynamic_lag needs a wall_drag > 0 N*m*s/rad");
         if (e.params.at("initial_lag").given && e.params.at("initial_direction").given)
             throw e.error("initial_lag", "give initial_lag or initial_direction, not both");
+        if (motion == "frozen")
+            for (const char* key : {"release_angle", "safe_angle"})
+                if (!e.params.at(key).given) throw e.error("motion", std::string("frozen needs ") + key);
+        if (motion == "frozen" && e.params.at("initial_lag").given &&
+            !(e.number("initial_lag") < e.number("release_angle")))
+            throw e.error("initial_lag", "must be below release_angle");
+        const std::string& law = e.text("power_law");
+        if (motion == "torque_arm" && law != "lag") {
+            for (const char* key : {"lag", "lag_table_speed", "lag_table_lag"})
+                if (e.params.at(key).given)
+                    throw e.error(key, std::string("not used with power_law: ") + law + " (the correlation sets the load)");
+        }
+        if (motion == "torque_arm" && law == "lag") {
+            for (const char* key : {"ball_size_factor", "start_speed_fraction"})
+                if (e.params.at(key).given)
+                    throw e.error(key, "used only with power_law: bond or morrell_c");
+        }
+        if (e.params.at("ball_size_factor").given && law != "bond")
+            throw e.error("ball_size_factor", "used only with power_law: bond");
+        // The lag laws hold the charge between hanging (0) and level with
+        // the axis (90°), in the turning sense (a shell turning −z mirrors it).
+        if (motion == "torque_arm" && law == "lag") {
+            auto outside = [](double a) { return !(a >= 0 && a <= M_PI / 2); };
+            if (e.params.at("lag").given && outside(e.number("lag")))
+                throw e.error("lag", "must be in [0, 90] deg (from the downward vertical, in the turning sense), got " +
+                                         formatNumber(e.number("lag") * 180 / M_PI) + " deg");
+            if (e.params.at("lag_table_lag").given)
+                for (double a : e.numbers("lag_table_lag"))
+                    if (outside(a))
+                        throw e.error("lag_table_lag", "every entry must be in [0, 90] deg, got " +
+                                                           formatNumber(a * 180 / M_PI) + " deg");
+        }
         const bool speeds = e.params.at("lag_table_speed").given, lags = e.params.at("lag_table_lag").given;
         if (speeds != lags)
             throw e.error(speeds ? "lag_table_speed" : "lag_table_lag",

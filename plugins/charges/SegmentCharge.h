@@ -16,6 +16,15 @@ enum class ChargeMotionMode {
     DynamicLag,  ///< on its own pin, dragged by the wall: the lag follows
     TorqueArm,   ///< no body: held at a lag that is a condition, its weight's
                  ///< moment m·g·r_c·sin α loads the shell (tumbling mills)
+    Frozen,      ///< no body: a packed block lifted with the shell until it
+                 ///< breaks loose at the release angle and falls (issue 27)
+};
+
+/// What sets a torque-arm charge's load (plugins/charges/ChargePowerLaw.h).
+enum class ChargePowerLaw {
+    Lag,      ///< the weight's moment at the lag (constant or a table against φ)
+    Bond,     ///< Bond's ball-mill power equation (1961; Rowland's metric form)
+    MorrellC, ///< Morrell's C-model net power (1996)
 };
 
 /// What the lag α is measured from.
@@ -42,6 +51,14 @@ struct SegmentChargeParams {
     /// (both empty: the constant `lag`); φ strictly increasing [1], lags [rad].
     std::vector<double> lagTableSpeed, lagTableLag;
     double smoothingSpeed = 0;  ///< ω_ε [rad/s] > 0: TorqueArm lag · tanh(ω/ω_ε)
+    ChargePowerLaw powerLaw = ChargePowerLaw::Lag;  ///< TorqueArm: what sets the load
+    double ballSizeFactor = 0;      ///< S_s [W/kg] (= kW/t), Bond's ball-size term
+    /// φ_s [1] > 0: below this fraction of critical speed a correlation's
+    /// torque is held at its value at φ_s (the start rule; no P/ω at ω = 0).
+    double startSpeedFraction = 0.5;
+    double releaseAngle = 0;  ///< θ_r [rad] in (0, π): Frozen, where the packed block breaks loose
+    double safeAngle = 0;     ///< θ_s [rad] in (0, π): Frozen, the protection's trip angle
+    double frozenInitialLag = 0;  ///< θ_0 [rad]: Frozen, the block's lag at t = 0
 };
 
 /**
@@ -90,8 +107,25 @@ struct SegmentChargeParams {
  *   96 % of it at ω = 2ω_ε); the breakaway torque of a charge lifted rigidly
  *   before it slumps is not modelled. ω_c omits the ball radius (the
  *   sqrt(g/(R − r_ball)) form needs the ball size, which this element does
- *   not take). Empirical power models (Hogg–Fuerstenau) are not
- *   implemented: their published form could not be checked here.
+ *   not take). With `power_law` a published correlation (Bond 1961 in
+ *   Rowland's metric form; Morrell's 1996 C-model net power:
+ *   plugins/charges/ChargePowerLaw.h has the equations) sets the load:
+ * <pre>
+ *   M = −T(φ_h)·tanh(ω/ω_ε),  T(φ) = P(φ)/(φ ω_c),  φ_h = max(|ω|/ω_c, φ_s)
+ * </pre>
+ *   so that M ω = −P(φ) running and the start is continuous, zero at rest
+ *   (φ_s = start_speed_fraction: below it the torque is held). The lag
+ *   output is then the equivalent asin(T/(m |g| r_c)). Lag laws take lags
+ *   in [0, 90°] only. Hogg–Fuerstenau is not implemented (its published
+ *   form could not be checked here).
+ * - Frozen (a packed charge, issue 27): no body; mass and J_Bz on the
+ *   shell's axis; the block turns with the shell, its lag θ = θ_0 + the
+ *   shell's turn since t = 0:
+ * <pre>
+ *   M = −m |g| r_c sin θ  while packed and θ < θ_r,  0 once released
+ *   released: latched at the first step end with θ ≥ θ_r
+ *   fall energy m |g| r_c (1 − cos θ_r), checked against safe_angle θ_s
+ * </pre>
  *
  * Lag conventions (docs/charges.md has the picture): `Vertical` measures α
  * from the downward vertical (the gravity direction in the xy-plane; −y
@@ -123,6 +157,33 @@ public:
     double calcTorqueArmLag(double omega) const;
     /// The TorqueArm couple on the shell [N*m] at shell speed ω [rad/s].
     double calcTorqueArmTorque(double omega) const;
+    /// A correlation's net power [W] at fraction of critical φ >= 0 (Bond,
+    /// MorrellC; the lag law: m g r_c sin α(φ) ω).
+    double calcLawPower(double phi) const;
+    /// The load's magnitude [N*m] at φ before the smoothing: P(φ)/(φ ω_c),
+    /// held at its φ_s value below φ_s for a correlation.
+    double calcLawTorque(double phi) const;
+    /// Fraction of critical speed of the drum, ω/ω_c (signed) [1].
+    double calcFractionOfCritical(const SimTK::State& s) const;
+    /// The weight's largest moment m |g| r_c [N*m] (the lag at 90°).
+    double calcUnbalanceMoment() const;
+
+    /// Frozen: the packed block's lag θ from the downward vertical [rad]
+    /// (θ_0 + the drum's turn since t = 0), whether it has been released,
+    /// and the largest lag reached while packed (at the integrator's step
+    /// ends; θ_r exactly at the release).
+    double calcFrozenLag(const SimTK::State& s) const;
+    bool isReleased(const SimTK::State& s) const;
+    double getAngleReached(const SimTK::State& s) const;
+    /// Frozen: the couple on the shell [N*m]: −m |g| r_c sin θ while packed
+    /// and θ < θ_r, 0 once released (the fallen charge lies at the bottom).
+    double calcFrozenTorque(const SimTK::State& s) const;
+    /// Frozen: the latch (released, angle reached) from state `s` at an
+    /// accepted step end; returns 1 if it changed, else 0.
+    double updateFrozenLatch(SimTK::State& s) const;
+    /// Frozen: the value the latch should take at `s` (1 released, 0 not).
+    double calcFrozenLatch(const SimTK::State& s) const;
+    void setFrozenStart(SimTK::State& s) const;
     /// Absolute speed of the drum about z [rad/s] (Stage::Velocity).
     double calcDrumSpeed(const SimTK::State& s) const;
 
@@ -156,6 +217,9 @@ private:
     SimTK::MobilizedBody m_carrier, m_drum, m_charge;
     SegmentChargeParams m_p;
     mutable SimTK::DiscreteVariableIndex m_heldTorque;
+    /// Frozen: the drum's angle at which the block hangs (θ = 0), the
+    /// released latch (0/1) and the largest lag reached while packed.
+    mutable SimTK::DiscreteVariableIndex m_hangAngle, m_released, m_angleReached;
 };
 
 }  // namespace milldyn
