@@ -308,7 +308,7 @@ void addChargeChecks(const ModelSpec& spec, AnalysisResult& result) {
             double top = 0;
             for (const auto& row : result.rows) top = std::max(top, std::abs(row[phiColumn]));
             if (top > 0.9)
-                result.notes.push_back("warning: charge " + e.name + " ran at up to " + formatNumber(100 * top, 4) +
+                result.notes.push_back("warning: charge '" + e.name + "' ran at up to " + formatNumber(100 * top, 4) +
                                        " % of its critical speed (above 90 %: the charge nears centrifuging)");
         }
         if (e.text("motion") != "frozen") continue;
@@ -335,12 +335,12 @@ void addChargeChecks(const ModelSpec& spec, AnalysisResult& result) {
         const std::string deg = " deg";
         std::string verdict;
         if (angle > safe)
-            verdict = "unsafe: the shell lifted the packed charge " + e.name + " to " +
+            verdict = "unsafe: the shell lifted packed charge '" + e.name + "' to " +
                       formatNumber(angle * 180 / M_PI, 4) + deg + ", past the safe angle " +
                       formatNumber(safe * 180 / M_PI, 4) + deg +
                       " (frozen-charge protection trips the drive there)" + (fell ? ", then it fell" : "");
         else
-            verdict = "safe: charge " + e.name + (fell ? " broke loose at " : " was lifted to ") +
+            verdict = "safe: packed charge '" + e.name + "'" + (fell ? " broke loose at " : " was lifted to ") +
                       formatNumber(angle * 180 / M_PI, 4) + deg + ", within the safe angle " +
                       formatNumber(safe * 180 / M_PI, 4) + deg;
         result.notes.push_back("frozen charge: " + verdict);

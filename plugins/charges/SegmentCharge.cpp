@@ -300,7 +300,7 @@ double SegmentCharge::calcWallTorque(const State& s) const {
         case ChargeMotionMode::Held: return getHeldTorque(s);
         case ChargeMotionMode::DynamicLag: return m_p.wallDrag * calcSlipSpeed(s);
         case ChargeMotionMode::TorqueArm: return -calcTorqueArmTorque(calcDrumSpeed(s));
-        case ChargeMotionMode::Frozen: return -calcFrozenTorque(s);
+        case ChargeMotionMode::Frozen: return 0.0 - calcFrozenTorque(s);  // +0, not -0, once released
     }
     return 0;
 }

@@ -151,7 +151,7 @@ TEST(ChargePowerLaw, MorrellChargeDrawsMorrellsNetPower) {
 TEST(ChargePowerLaw, WarnsAboveNinetyPercentOfCritical) {
     const AnalysisResult fast = runAnalysis(readMap({}, {{"elements.charge.initial_speed_fraction", "0.95"}}));
     bool warned = false;
-    for (const auto& n : fast.notes) warned = warned || n.find("warning: charge charge ran at up to 95") == 0;
+    for (const auto& n : fast.notes) warned = warned || n.find("warning: charge 'charge' ran at up to 95") == 0;
     EXPECT_TRUE(warned);
     const AnalysisResult normal = runAnalysis(readMap());
     for (const auto& n : normal.notes) EXPECT_EQ(n.find("warning"), std::string::npos) << n;
@@ -211,7 +211,7 @@ TEST(FrozenCharge, LiftsReleasesAndJudgesTheSafeAngle) {
     EXPECT_EQ(r.find("charge.angle_reached")->value, 30 * kDeg);
     EXPECT_NEAR(r.find("charge.fall_energy")->value, oracles::frozenFallEnergy(m, rc, 30 * kDeg, 9.81), 1e-6);
     bool safe = false;
-    for (const auto& n : r.notes) safe = safe || n.find("frozen charge: safe: charge charge broke loose at 30") == 0;
+    for (const auto& n : r.notes) safe = safe || n.find("frozen charge: safe: packed charge 'charge' broke loose at 30") == 0;
     EXPECT_TRUE(safe);
 
     // Released past the safe angle: the protection would have tripped.
@@ -220,7 +220,7 @@ TEST(FrozenCharge, LiftsReleasesAndJudgesTheSafeAngle) {
     late[3].second = "end_time: 3 s\n  zero_dof: integrate";
     const AnalysisResult u = runAnalysis(readMap(late));
     bool unsafe = false;
-    for (const auto& n : u.notes) unsafe = unsafe || n.find("frozen charge: unsafe: the shell lifted") == 0;
+    for (const auto& n : u.notes) unsafe = unsafe || n.find("frozen charge: unsafe: the shell lifted packed charge 'charge' to 50") == 0;
     EXPECT_TRUE(unsafe);
 }
 
