@@ -60,6 +60,8 @@ std::vector<ValidationRow> planetaryGearCases(const std::string& filter);
 std::vector<ValidationRow> planetaryBeltCases(const std::string& filter);
 std::vector<ValidationRow> beadMillCases(const std::string& filter);
 std::vector<ValidationRow> tumblingMillCases(const std::string& filter);
+/// Planetary stages and bevel pairs (issue 32, validation/cases/GearboxCases.cpp).
+std::vector<ValidationRow> gearboxCases(const std::string& filter);
 std::vector<ValidationRow> startCases(const std::string& filter);
 /// The dynamic (dq) induction machine against an independent transient
 /// oracle and its starters against the equivalent circuit
