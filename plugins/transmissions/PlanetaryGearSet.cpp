@@ -396,21 +396,26 @@ void buildPlanetaryGearSet(const ElementSpec& spec, Scene& scene) {
                     },
                     "K_gamma = n max_k F_sun,k / sum of F_sun (ISO 6336-1 mesh load factor)"});
     // Torques the set's meshes and planet pins apply to the members about +z.
-    scene.addProbe({spec.name + ".torque_on_sun", "N*m", ProbeRole::CouplingTorque, stage,
+    // One is a coupling torque (for the summary's peaks and the linear
+    // analyses' outputs): the first member named in sun, ring, carrier order,
+    // the shaft the summary names for this element's coupling torque.
+    const ProbeRole sunRole = m.sunFixed ? ProbeRole::Generic : ProbeRole::CouplingTorque;
+    const ProbeRole ringRole = !m.sunFixed || m.ringFixed ? ProbeRole::Generic : ProbeRole::CouplingTorque;
+    scene.addProbe({spec.name + ".torque_on_sun", "N*m", sunRole, stage,
                     [tangential, n, rs](const State& st) {
                         double t = 0;
                         for (int k = 0; k < n; ++k) t -= rs * tangential(st, 2 * k);
                         return t;
                     },
                     "torque of the planets' meshes on the sun, + about z"});
-    scene.addProbe({spec.name + ".torque_on_ring", "N*m", ProbeRole::CouplingTorque, stage,
+    scene.addProbe({spec.name + ".torque_on_ring", "N*m", ringRole, stage,
                     [tangential, n, rr](const State& st) {
                         double t = 0;
                         for (int k = 0; k < n; ++k) t -= rr * tangential(st, 2 * k + 1);
                         return t;
                     },
                     "torque of the planets' meshes on the ring, + about z"});
-    scene.addProbe({spec.name + ".torque_on_carrier", "N*m", ProbeRole::CouplingTorque, Stage::Acceleration,
+    scene.addProbe({spec.name + ".torque_on_carrier", "N*m", ProbeRole::Generic, Stage::Acceleration,
                     [bearing, m, n, a](const State& st) {
                         double t = 0;
                         for (int k = 0; k < n; ++k) {

@@ -219,7 +219,7 @@ void millBevel(std::vector<ValidationRow>& rows, const Steady& st) {
     m.shaftAngle = 90 * kDeg;
     m.normalPressureAngle = 20 * kDeg;
     m.spiralAngle = 35 * kDeg;
-    m.pinionRightHand = false;
+    m.pinionRightHand = true;
     m.pinionClockwiseFromLargeEnd = st.speed.at("bevel_pinion") < 0;
     // The pinion passes the sun's torque over the bevel ratio (steady, no losses).
     const double wt = st.speed.at("table"), TL = 1.1e6 + 7.3e4 * wt;
