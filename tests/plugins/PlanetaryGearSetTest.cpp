@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
+#include <iostream>
 #include <map>
 #include <string>
 
@@ -226,6 +228,62 @@ TEST(PlanetaryGearSet, RigidStageReducesInLinearize) {
     const double w = std::sqrt(1e6 * (Jeq + Jt) / (Jeq * Jt));
     ASSERT_EQ(lm.naturalFrequencies.size(), 2);
     EXPECT_NEAR(lm.naturalFrequencies[1], w, 1e-6 * w);
+}
+
+// frequency_response through a rigid stage (issue 32 item 3): the
+// table's periodic load is projected on the independent coordinates.
+// Hand model: the stage reduced to the carrier (J_eq as above) with the
+// motor's slope b0 = M_n/(ω_s − ω_n) on the sun, i² b0 on the carrier; the
+// flange k, c to the table J_t, unit torque −1 on the table:
+//   [J_eq 0; 0 J_t] ẍ + [i²b0 + c, −c; −c, c] ẋ + [k, −k; −k, k] x = [0; −1],
+// flange torque k(x1 − x2) + c(ẋ1 − ẋ2), quasi-static amplitude 1. Its peak
+// over the analysis's own log grid; and a time simulation at 1.6·√(k/J_t).
+TEST(PlanetaryGearSet, FrequencyResponseThroughARigidStage) {
+    std::string text = stage("ring", "sun", "carrier", "");
+    text = test::replacedIn(text, "elements:\n",
+                            "  - {name: table, inertia: 500 kg*m^2, joint: {type: pin, parent: ground, location: [0 m, "
+                            "0 m, 2 m]}}\nelements:\n");
+    const double i = 1 + kZr / kZs, ip = 1 - kZr / kZp;
+    const double Jeq = kJc + 3 * kMp * kA * kA + kJs * i * i + 3 * kJp * ip * ip, Jt = 500, k = 1e6, c = 3000;
+    const double b0 = 30000 / ((1000 - 990) * 2 * M_PI / 60), ceq = i * i * b0;
+    const double Pmin = 20, Pmax = 200, wcheck = 1.6 * std::sqrt(k / Jt);
+    const int points = 400;
+    char scenario[700];
+    std::snprintf(scenario, sizeof scenario,
+                  "  - {type: TorsionalCoupling, name: shaft, bodies: [carrier, table], stiffness: 1e6 N*m/rad, "
+                  "damping: 3000 N*m*s/rad}\n"
+                  "  - {type: PeriodicLoad, name: rows, bodies: [table], rows: 1, mean_torque: 3000 N*m, amplitudes: "
+                  "[500 N*m], fundamental_frequency: 10 rad/s, arrangement: in_phase}\n"
+                  "scenario: {analysis: frequency_response, load: rows, frequency_min: %g rad/s, frequency_max: "
+                  "%g rad/s, points: %d, check_frequencies: [%.17g rad/s]}\nintegrator: {accuracy: 1e-8}",
+                  Pmin, Pmax, points, wcheck);
+    text = test::replacedIn(text, "scenario: {analysis: transient, end_time: 1 s}", scenario);
+    const AnalysisResult r = runAnalysis(readText("stage.yaml", text, {}));
+    std::map<std::string, double> v;
+    for (const auto& x : r.results) v[x.name] = x.value;
+    using C = std::complex<double>;
+    auto flange = [&](double P) {
+        const C I(0, 1);
+        const C a11 = k - P * P * Jeq + I * P * (ceq + c), a12 = -k - I * P * c, a22 = k - P * P * Jt + I * P * c;
+        const C det = a11 * a22 - a12 * a12;
+        const C x1 = -a12 * C(-1) / det, x2 = a11 * C(-1) / det;  // Cramer, f = [0, −1]
+        return std::abs((k + I * P * c) * (x1 - x2));
+    };
+    double peak = 0, peakAt = 0;
+    for (int n = 0; n < points; ++n) {
+        const double P = Pmin * std::pow(Pmax / Pmin, double(n) / (points - 1));
+        if (flange(P) > peak) {
+            peak = flange(P);
+            peakAt = P;
+        }
+    }
+    ASSERT_TRUE(v.count("shaft.torque.peak_frequency"));
+    EXPECT_NEAR(v.at("shaft.torque.peak_frequency"), peakAt, 1e-12 * peakAt);
+    EXPECT_NEAR(v.at("shaft.torque.peak_dynamic_factor"), peak, 1e-5 * peak);
+    ASSERT_TRUE(v.count("time_check_amplitude_rel_diff"));
+    EXPECT_LT(v.at("time_check_amplitude_rel_diff"), 1e-3);
+    std::cout << "peak DF " << v.at("shaft.torque.peak_dynamic_factor") << " at " << peakAt << " rad/s; time check "
+              << v.at("time_check_amplitude_rel_diff") << ", phase " << v.at("time_check_phase_diff") << "\n";
 }
 
 TEST(PlanetaryGearSet, ResonanceMapTakesARigidStageAndReportsTheMeshOrder) {
