@@ -64,7 +64,9 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     const ElementSpec& sc = spec.scenario;
     auto scene = buildScene(spec);
     const SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
-    const LinearModel lm = linearizeScene(*scene, steady);
+    // Rigid meshes (GearPair, GearMesh, PlanetaryGearSet, BeltDrive) are
+    // reduced to independent coordinates, as linearize does.
+    const LinearModel lm = linearizeScene(*scene, steady, true, true);
     const PeriodicLoad& load = findPeriodicLoad(*scene, spec);
     const int k = static_cast<int>(sc.number("harmonic"));
     const LoadResponse response(*scene, lm, load);

@@ -150,7 +150,9 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
             if (!matter.getConstraint(c).isDisabled(x0))
                 throw AnalysisError("the model has kinematic constraints (a rigid GearPair or BeltDrive, a GearMesh: " +
                                     constraintName(scene, matter.getConstraint(c)) +
-                                    "), which this analysis does not reduce (linearize does); use law: compliant");
+                                    "), which this analysis does not reduce (linearize, resonance_map and frequency_response do); make "
+                                    "it compliant: GearPair and PlanetaryGearSet law: compliant with mesh_stiffness, "
+                                    "or a GearMesh replaced by a compliant GearPair or PlanetaryGearSet");
     }
     calcIndependentBasis(scene, x0, lm);
     const int r = static_cast<int>(lm.independent.size());

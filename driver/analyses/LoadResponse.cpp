@@ -40,6 +40,9 @@ Eigen::VectorXcd LoadResponse::forcing(int k, bool inPhase) const {
             if (m_scene.bodies()[j].mobod.getMobilizedBodyIndex() == target)
                 f[j] += -std::exp(std::complex<double>(0, phase));
     }
+    // Reduced constraints: the generalized force on the independent
+    // coordinates v (u = N·v) is Nᵀ·f.
+    if (m_model.N.size()) return m_model.N.transpose().cast<std::complex<double>>() * f;
     return f;
 }
 

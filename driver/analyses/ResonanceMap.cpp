@@ -108,7 +108,9 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     const ElementSpec& sc = spec.scenario;
     auto scene = buildScene(spec);
     const SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
-    const LinearModel lm = linearizeScene(*scene, steady);
+    // Rigid meshes (GearPair, GearMesh, PlanetaryGearSet, BeltDrive) are
+    // reduced to independent coordinates, as linearize does.
+    const LinearModel lm = linearizeScene(*scene, steady, true, true);
     if (sc.text("load").empty()) return runOrderMap(spec, *scene, steady, lm, progress);
     const PeriodicLoad* load = scene->findElement<PeriodicLoad>(sc.text("load"));
     if (!load) throw sc.error("load", "'" + sc.text("load") + "' is not a PeriodicLoad element of this model");

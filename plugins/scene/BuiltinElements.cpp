@@ -17,6 +17,8 @@ void registerShaftBelt(ElementRegistry& registry);
 void registerDiscDrag(ElementRegistry& registry);
 void registerFlexibleRotor(ElementRegistry& registry);
 void registerGearPair(ElementRegistry& registry);
+void registerPlanetaryGearSet(ElementRegistry& registry);
+void registerBevelGearPair(ElementRegistry& registry);
 void registerShaftBearings(ElementRegistry& registry);
 void registerClutch(ElementRegistry& registry);
 void registerBrake(ElementRegistry& registry);
@@ -37,6 +39,8 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerDiscDrag(registry);
     registerFlexibleRotor(registry);
     registerGearPair(registry);
+    registerPlanetaryGearSet(registry);
+    registerBevelGearPair(registry);
     registerShaftBearings(registry);
     registerClutch(registry);
     registerBrake(registry);

@@ -100,6 +100,15 @@ void buildGearMesh(const ElementSpec& spec, Scene& scene) {
     });
     // Steady running keeps the planet at this speed ratio to the carrier.
     scene.addSpeedRelation(planet->name, carrier->name, impl->calcPlanetSpeed(1.0));
+    // The steady-state search moves angles and speeds freely: hold the
+    // constraint at position and velocity level (as GearPair does), or the
+    // search ends on a state that violates it (issue 26 item 6).
+    scene.addSteadyResidual({spec.name + ".rolling_error", [impl, c, pl](const State& s) {
+                                 return pinAngle(s, pl) - impl->calcPlanetAngle(pinAngle(s, c));
+                             }});
+    scene.addSteadyResidual({spec.name + ".rolling_rate", [impl, c, pl](const State& s) {
+                                 return pinSpeed(s, pl) - impl->calcPlanetSpeed(pinSpeed(s, c));
+                             }});
     // The planet's pin speed is relative to the carrier (ω_r = ω1 R/r, eq
     // 15): κ = 1 + ω_r/ω1.
     scene.addDerivedValue({spec.name + ".speed_ratio", 1 + impl->calcPlanetSpeed(1.0), "1",

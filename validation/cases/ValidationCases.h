@@ -62,6 +62,8 @@ std::vector<ValidationRow> beadMillCases(const std::string& filter);
 std::vector<ValidationRow> tumblingMillCases(const std::string& filter);
 /// Issue 27: the charge's power correlations and the frozen charge (ChargePowerCases.cpp).
 std::vector<ValidationRow> chargePowerCases(const std::string& filter);
+/// Planetary stages and bevel pairs (issue 32, validation/cases/GearboxCases.cpp).
+std::vector<ValidationRow> gearboxCases(const std::string& filter);
 std::vector<ValidationRow> startCases(const std::string& filter);
 /// The dynamic (dq) induction machine against an independent transient
 /// oracle and its starters against the equivalent circuit
