@@ -109,7 +109,12 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     auto scene = buildScene(spec);
     const SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
     const LinearModel lm = linearizeScene(*scene, steady);
-    if (sc.text("load").empty()) return runOrderMap(spec, *scene, steady, lm, progress);
+    const std::string motorNote = motorDampingNote(*scene, lm);
+    if (sc.text("load").empty()) {
+        AnalysisResult orders = runOrderMap(spec, *scene, steady, lm, progress);
+        if (!motorNote.empty()) orders.notes.push_back(motorNote);
+        return orders;
+    }
     const PeriodicLoad* load = scene->findElement<PeriodicLoad>(sc.text("load"));
     if (!load) throw sc.error("load", "'" + sc.text("load") + "' is not a PeriodicLoad element of this model");
     const LoadResponse response(*scene, lm, *load);
@@ -126,6 +131,7 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     const double threshold = sc.number("threshold");
 
     AnalysisResult result;
+    if (!motorNote.empty()) result.notes.push_back(motorNote);
     result.derived = derivedResults(*scene);
     result.analysis = "resonance_map";
     result.tableName = "resonance_map";
