@@ -17,6 +17,17 @@
 //                             (J = 0.58, quadratic load) against its
 //                             documented nominal speed
 //  start_energy_balance_dq_*  the energy balance of the starter benches
+// Issue 28, against the extended oracle dqMachineRun (frame turning with
+// the supply, second cage, rotor resistance r(t), stator open intervals,
+// phase steps, V/f frequency, source impedance):
+//  start_dq_oracle_open_transition  star–delta with a 50 ms open transition, delta 30° ahead
+//  start_dq_oracle_interruption     the supply away 0.1 s while running, reclosed in phase with the grid
+//  start_dq_oracle_rotor_resistance stepped rotor resistance; _liquid_resistance the ramp
+//  start_dq_oracle_converter        V/f with boost (its frequency follows the ramp, never held)
+//  start_dq_oracle_source           DOL through S_k, X/R: every sample and the voltage dip
+//  start_dq_oracle_datasheet        the fitted double cage of the datasheet bench
+//  start_dq_datasheet_steady        the static catalogue curve vs the fitted dq machine of the same data
+//  linearize_dq_belt_mode           linearize's belt mode with the fluxes vs dqBeltChainEigenvalues
 
 #include "driver/analyses/Analysis.h"
 #include "validation/cases/ValidationCases.h"
