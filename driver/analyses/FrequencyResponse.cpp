@@ -75,6 +75,7 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     auto linearOutput = [&](double P, int probe) { return response.output(P, k, probe); };
 
     AnalysisResult result;
+    if (const std::string note = motorDampingNote(*scene, lm); !note.empty()) result.notes.push_back(note);
     result.derived = derivedResults(*scene);
     result.analysis = "frequency_response";
     result.tableName = "frequency_response";

@@ -1,6 +1,7 @@
 #include "driver/analyses/LinearModel.h"
 
 #include "driver/Simulation.h"
+#include "plugins/motors/DqInductionMotor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,18 @@ void calcUndampedModes(LinearModel& lm) {
         lm.modeShapes.col(c).cwiseAbs().maxCoeff(&at);
         lm.modeShapes.col(c) /= lm.modeShapes(at, c);
     }
+}
+
+std::vector<std::string> dqMachineNames(const Scene& scene) {
+    // Every drive declares a DriveTorque probe "NAME.torque".
+    std::vector<std::string> names;
+    for (const auto& p : scene.probes()) {
+        if (p.role != ProbeRole::DriveTorque || p.name.size() < 7) continue;
+        const std::string name = p.name.substr(0, p.name.size() - 7);
+        if (p.name.compare(name.size(), 7, ".torque") == 0 && scene.findElement<DqInductionMotor>(name))
+            names.push_back(name);
+    }
+    return names;
 }
 
 namespace {
@@ -161,6 +174,25 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     const auto& probes = scene.probes();
     const int np = static_cast<int>(probes.size());
 
+    // Elements' own states (dq machines' fluxes): their z indices, and per
+    // entry the speed its phasor pair turns at in steady running.
+    std::vector<int> zIndex;
+    std::vector<double> zFrame;
+    for (const std::string& name : dqMachineNames(scene)) {
+        const DqInductionMotor* dq = scene.findElement<DqInductionMotor>(name);
+        system.realize(x0, SimTK::Stage::Acceleration);
+        const int first = dq->firstFluxIndex(x0);
+        static const char* const kFlux[] = {".psi_s_alpha", ".psi_s_beta", ".psi_r1_alpha", ".psi_r1_beta",
+                                            ".psi_r2_alpha", ".psi_r2_beta"};
+        for (int k = 0; k < dq->fluxStateCount(); ++k) {
+            zIndex.push_back(first + k);
+            zFrame.push_back(2 * M_PI * dq->params().frequency);
+            lm.stateNames.push_back(name + kFlux[k]);
+        }
+    }
+    const int nz = static_cast<int>(zIndex.size());
+    Eigen::VectorXd zdotOut;  // the last evaluation's ż of those states
+
     double maxUDot = 0, minStep = 1;  // for the round-off floor of the frequencies
     // Moves q or u by h along column k of N; returns (udot, probe values).
     auto evaluate = [&](bool onQ, int k, double h, Eigen::VectorXd& udot, Eigen::VectorXd& out) {
@@ -173,6 +205,8 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
         system.realize(s, SimTK::Stage::Acceleration);
         udot.resize(n);
         for (int i = 0; i < n; ++i) udot[i] = s.getUDot()[i];
+        zdotOut.resize(nz);
+        for (int i = 0; i < nz; ++i) zdotOut[i] = s.getZDot()[zIndex[i]];
         maxUDot = std::max(maxUDot, udot.cwiseAbs().maxCoeff());
         out.resize(np);
         for (int p = 0; p < np; ++p) out[p] = probes[p].value(s);
@@ -186,7 +220,7 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
 
     // dU·(∂u̇/∂v): the accelerations of every mobility as v moves; along N
     // the constraints stay satisfied, and u̇ stays in N's range.
-    Eigen::MatrixXd dUdq(n, r), dUdu(n, r);
+    Eigen::MatrixXd dUdq(n, r), dUdu(n, r), dZdq(nz, r), dZdu(nz, r);
     lm.outputQ.resize(np, r);
     lm.outputU.resize(np, r);
     for (int k = 0; k < r; ++k) {
@@ -200,8 +234,10 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
             minStep = std::min(minStep, h);
             Eigen::VectorXd up, um, op, om;
             evaluate(onQ, k, +h, up, op);
+            const Eigen::VectorXd zp = zdotOut;
             evaluate(onQ, k, -h, um, om);
             (onQ ? dUdq : dUdu).col(k) = (up - um) / (2 * h);
+            (onQ ? dZdq : dZdu).col(k) = (zp - zdotOut) / (2 * h);
             (onQ ? lm.outputQ : lm.outputU).col(k) = (op - om) / (2 * h);
         }
     }
@@ -218,6 +254,42 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     lm.A.topRightCorner(r, r) = Eigen::MatrixXd::Identity(r, r);
     lm.A.bottomLeftCorner(r, r) = dVdq;
     lm.A.bottomRightCorner(r, r) = dVdu;
+    if (nz > 0) {
+        // The states' own columns: ∂u̇/∂z and ∂ż/∂z by central differences,
+        // the step scaled to the element's largest state.
+        Eigen::MatrixXd dUdz(n, nz), dZdz(nz, nz);
+        double zScale = 0;
+        for (int i = 0; i < nz; ++i) zScale = std::max(zScale, std::abs(x0.getZ()[zIndex[i]]));
+        const double h = 1e-6 * (zScale > 0 ? zScale : 1.0);
+        for (int k = 0; k < nz; ++k) {
+            Eigen::VectorXd up, um, zp;
+            for (double sign : {1.0, -1.0}) {
+                SimTK::State s = x0;
+                s.updZ()[zIndex[k]] += sign * h;
+                system.realize(s, SimTK::Stage::Acceleration);
+                Eigen::VectorXd ud(n), zd(nz);
+                for (int i = 0; i < n; ++i) ud[i] = s.getUDot()[i];
+                for (int i = 0; i < nz; ++i) zd[i] = s.getZDot()[zIndex[i]];
+                if (sign > 0) up = ud, zp = zd;
+                else um = ud, dZdz.col(k) = (zp - zd) / (2 * h);
+            }
+            dUdz.col(k) = (up - um) / (2 * h);
+        }
+        // In the frame turning with the phasors (z = R(t)·z̃, R(t0) = I):
+        // dz̃/dt = ż − Ω·z̃, Ω = [[0, −ω], [ω, 0]] per pair.
+        for (int i = 0; i + 1 < nz; i += 2)
+            if (zFrame[i] > 0) {
+                dZdz(i, i + 1) += zFrame[i];
+                dZdz(i + 1, i) -= zFrame[i];
+            }
+        const Eigen::MatrixXd dVdz = lm.N.size() ? Eigen::MatrixXd(lm.M.ldlt().solve(N.transpose() * Mfull * dUdz)) : dUdz;
+        lm.Afull = Eigen::MatrixXd::Zero(2 * r + nz, 2 * r + nz);
+        lm.Afull.topLeftCorner(2 * r, 2 * r) = lm.A;
+        lm.Afull.block(r, 2 * r, r, nz) = dVdz;
+        lm.Afull.block(2 * r, 0, nz, r) = dZdq;
+        lm.Afull.block(2 * r, r, nz, r) = dZdu;
+        lm.Afull.bottomRightCorner(nz, nz) = dZdz;
+    }
     lm.bodyNames = mobilityNames(scene, x0);
     for (int j : lm.independent) lm.dofNames.push_back(lm.bodyNames[j]);
     for (const auto& p : probes) {
@@ -225,15 +297,19 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
         lm.outputUnits.push_back(p.unit);
     }
     if (!withModes) return lm;
-    Eigen::EigenSolver<Eigen::MatrixXd> eig(lm.A);
-    std::vector<std::complex<double>> ev(eig.eigenvalues().data(), eig.eigenvalues().data() + 2 * r);
-    std::sort(ev.begin(), ev.end(), [](const auto& a, const auto& b) {
-        if (std::abs(std::abs(a.imag()) - std::abs(b.imag())) > 1e-9 * (1 + std::abs(a)))
-            return std::abs(a.imag()) < std::abs(b.imag());
-        if (a.real() != b.real()) return a.real() > b.real();
-        return a.imag() > b.imag();
-    });
-    lm.eigenvalues = Eigen::Map<Eigen::VectorXcd>(ev.data(), 2 * r);
+    auto sortedEigenvalues = [](const Eigen::MatrixXd& A) {
+        Eigen::EigenSolver<Eigen::MatrixXd> eig(A);
+        std::vector<std::complex<double>> ev(eig.eigenvalues().data(), eig.eigenvalues().data() + A.rows());
+        std::sort(ev.begin(), ev.end(), [](const auto& a, const auto& b) {
+            if (std::abs(std::abs(a.imag()) - std::abs(b.imag())) > 1e-9 * (1 + std::abs(a)))
+                return std::abs(a.imag()) < std::abs(b.imag());
+            if (a.real() != b.real()) return a.real() > b.real();
+            return a.imag() > b.imag();
+        });
+        return Eigen::VectorXcd(Eigen::Map<Eigen::VectorXcd>(ev.data(), A.rows()));
+    };
+    lm.eigenvalues = sortedEigenvalues(lm.A);
+    if (nz > 0) lm.eigenvaluesFull = sortedEigenvalues(lm.Afull);
 
     calcUndampedModes(lm);
     return lm;
@@ -242,6 +318,26 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
 bool isRigidEigenvalue(const LinearModel& model, std::complex<double> lambda) {
     const double scale = model.eigenvalues.size() > 0 ? model.eigenvalues.cwiseAbs().maxCoeff() : 0.0;
     return std::abs(lambda) <= std::max(1e-9 * scale, model.frequencyFloor);
+}
+
+std::string motorDampingNote(const Scene& scene, const LinearModel& lm) {
+    auto ratios = [](const Eigen::VectorXcd& ev) {
+        std::string out;
+        for (Eigen::Index i = 0; i < ev.size(); ++i)
+            if (ev[i].imag() > 0)
+                out += (out.empty() ? "" : ", ") + std::to_string(ev[i].imag() / (2 * M_PI)).substr(0, 7) + " Hz: " +
+                       std::to_string(-ev[i].real() / std::abs(ev[i])).substr(0, 6);
+        return out.empty() ? std::string("none") : out;
+    };
+    bool staticMotor = false;
+    for (const auto& p : scene.probes()) staticMotor = staticMotor || p.role == ProbeRole::DriveTorque;
+    if (lm.Afull.size() == 0)
+        return staticMotor ? "motor model of the damping: each drive's static torque-speed slope at the operating point"
+                           : "";
+    return "motor model of the damping: the dq machines' fluxes frozen (no electrical damping; InductionMotor elements "
+           "as their static slope) — damping ratios so (frequency: ratio) " + ratios(lm.eigenvalues) +
+           "; with the dq machines' flux states " + ratios(lm.eigenvaluesFull) +
+           " (linearize's eigenvalues_with_motor_states); the response here uses the first";
 }
 
 Eigen::VectorXcd harmonicResponse(const LinearModel& model, double P, const Eigen::VectorXcd& force) {

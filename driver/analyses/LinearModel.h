@@ -48,6 +48,16 @@ struct LinearModel {
     /// 1-DOF train whose gravity stiffnesses cancel would otherwise report
     /// 1e-5 rad/s as an elastic mode).
     double frequencyFloor = 0;
+    /// With elements' own continuous states (the fluxes of the scene's
+    /// DqInductionMotor elements): the first-order matrix of [q; u; z] (z in the
+    /// frame turning with each element's phasors: ∂ż/∂z − Ω), its
+    /// eigenvalues sorted as `eigenvalues`, and the z states' names. Empty
+    /// without such states; A and eigenvalues above are then the whole
+    /// story, and with them they are the mechanical system with those
+    /// states frozen.
+    Eigen::MatrixXd Afull;
+    Eigen::VectorXcd eigenvaluesFull;
+    std::vector<std::string> stateNames;
     /// Output rows: probe p's deviation ≈ outputQ.row(p)·q + outputU.row(p)·q̇.
     Eigen::MatrixXd outputQ, outputU;
     std::vector<std::string> outputNames, outputUnits;
@@ -75,6 +85,17 @@ void calcUndampedModes(LinearModel& model);
 struct AnalysisResult;
 /// Adds M, C, K, A and the eigenvalue and mode tables to a result.
 void addLinearModelOutputs(const LinearModel& model, AnalysisResult& result);
+
+/// The DqInductionMotor elements of a scene (their flux states are the
+/// elements' own states a linearization includes).
+std::vector<std::string> dqMachineNames(const Scene& scene);
+
+/// Which motor model a linear analysis's damping comes from, for its notes:
+/// with dq machines, their fluxes frozen in `model.A` (and C), and the
+/// damping ratios of the oscillating modes with their flux states
+/// (Afull) side by side; InductionMotor elements as their static slope.
+/// Empty when the scene has no motor.
+std::string motorDampingNote(const Scene& scene, const LinearModel& model);
 
 /// Complex amplitudes of q for the forcing f·e^{iPt}: (K − P²M + iP·C)·X = f.
 Eigen::VectorXcd harmonicResponse(const LinearModel& model, double P, const Eigen::VectorXcd& force);

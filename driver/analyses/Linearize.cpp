@@ -36,6 +36,19 @@ void addLinearModelOutputs(const LinearModel& lm, AnalysisResult& result) {
                             rigid ? 0.0 : -l.real() / mag});
     }
     result.extraTables.push_back(eig);
+    if (lm.Afull.size()) {
+        // With the motors' electrical states (dq machines' fluxes).
+        result.matrices.push_back(matrix("A_with_motor_states", "1/s", lm.Afull));
+        DataTable full{"eigenvalues_with_motor_states", {"index", "real", "imag", "frequency", "damping_ratio"},
+                       {"1", "1/s", "rad/s", "Hz", "1"}, {}};
+        for (Eigen::Index i = 0; i < lm.eigenvaluesFull.size(); ++i) {
+            const auto l = lm.eigenvaluesFull[i];
+            const bool rigid = isRigidEigenvalue(lm, l);
+            full.rows.push_back({double(i + 1), l.real(), l.imag(), std::abs(l.imag()) / (2 * M_PI),
+                                 rigid ? 0.0 : -l.real() / std::abs(l)});
+        }
+        result.extraTables.push_back(full);
+    }
 
     DataTable modes{"modes", {"mode", "natural_frequency", "natural_frequency_hz"}, {"1", "rad/s", "Hz"}, {}};
     for (int i = 0; i < n; ++i)
@@ -154,6 +167,30 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
         const std::string tag = "eigenvalue_" + std::to_string(i + 1);
         result.results.push_back({tag + "_real", l.real(), "1/s", "damped eigenvalue, real part"});
         if (l.imag() > 0) result.results.push_back({tag + "_imag", l.imag(), "rad/s", "damped eigenvalue, imaginary part"});
+    }
+    if (lm.Afull.size()) {
+        std::string states;
+        for (const auto& name : dqMachineNames(*scene)) states += (states.empty() ? "" : ", ") + name;
+        result.notes.push_back("motor models: the table eigenvalues (and C) has " + states +
+                               " with their flux states frozen (no electrical damping), InductionMotor elements as "
+                               "their static torque-speed slope; eigenvalues_with_motor_states includes the fluxes of " +
+                               states + " (in the frame turning with the supply): its damping ratios are the ones "
+                               "with the machines' electrical dynamics");
+        for (Eigen::Index i = 0; i < lm.eigenvaluesFull.size(); ++i) {
+            const auto l = lm.eigenvaluesFull[i];
+            if (l.imag() <= 0) continue;  // the oscillating ones, one of each pair
+            const std::string tag = "eigenvalue_with_motor_states_" + std::to_string(i + 1);
+            result.results.push_back({tag + "_real", l.real(), "1/s", "eigenvalue with the motors' flux states, real part"});
+            result.results.push_back({tag + "_imag", l.imag(), "rad/s", "eigenvalue with the motors' flux states, imaginary part"});
+            result.results.push_back({tag + "_damping_ratio", -l.real() / std::abs(l), "1",
+                                      "damping ratio with the motors' flux states"});
+        }
+    } else {
+        bool staticMotor = false;
+        for (const auto& e : spec.elements) staticMotor = staticMotor || e.type == "InductionMotor";
+        if (staticMotor)
+            result.notes.push_back("motor models: InductionMotor elements enter as their static torque-speed slope at "
+                                   "the operating point (their damping); a DqInductionMotor would add its flux states");
     }
     if (elastic == 0)
         result.notes.push_back("no elastic mode: every natural frequency is at most " +

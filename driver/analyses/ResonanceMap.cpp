@@ -111,7 +111,12 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     // Rigid meshes (GearPair, GearMesh, PlanetaryGearSet, BeltDrive) are
     // reduced to independent coordinates, as linearize does.
     const LinearModel lm = linearizeScene(*scene, steady, true, true);
-    if (sc.text("load").empty()) return runOrderMap(spec, *scene, steady, lm, progress);
+    const std::string motorNote = motorDampingNote(*scene, lm);
+    if (sc.text("load").empty()) {
+        AnalysisResult orders = runOrderMap(spec, *scene, steady, lm, progress);
+        if (!motorNote.empty()) orders.notes.push_back(motorNote);
+        return orders;
+    }
     const PeriodicLoad* load = scene->findElement<PeriodicLoad>(sc.text("load"));
     if (!load) throw sc.error("load", "'" + sc.text("load") + "' is not a PeriodicLoad element of this model");
     const LoadResponse response(*scene, lm, *load);
@@ -128,6 +133,7 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     const double threshold = sc.number("threshold");
 
     AnalysisResult result;
+    if (!motorNote.empty()) result.notes.push_back(motorNote);
     result.derived = derivedResults(*scene);
     result.analysis = "resonance_map";
     result.tableName = "resonance_map";

@@ -3,6 +3,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/MotorReports.h"
 #include "plugins/scene/Format.h"
 
 #include <algorithm>
@@ -431,6 +432,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             result.results.push_back(
                 {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
         }
+    addMotorReports(*scene, last, result);
     if (start == "rest")
         for (std::size_t i = 0; i < sequences.size(); ++i)
             if (sequenceEnd[i])

@@ -1,5 +1,6 @@
 #include "plugins/motors/InductionMotor.h"
 
+#include "plugins/motors/CageCircuitFit.h"
 #include "plugins/motors/StarterEvents.h"
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/Format.h"
@@ -488,6 +489,54 @@ void crossCheckInductionMotor(const ElementSpec& e) {
     }
 }
 
+/// A static curve has no switch-on transient: direct on line, with the
+/// datasheet's current data and efficiency, the dq machine fitted to the
+/// same data (double cage, CageCircuitFit) estimates the switch-on peak
+/// with the rotor held for three cycles (derived values; a transient notes
+/// when it exceeds the static curve's largest torque, MotorReports).
+void addSwitchOnPeakEstimate(const ElementSpec& spec, Scene& scene, const InductionMotor& motor) {
+    const InductionMotorParams& p = motor.params();
+    const TorqueSpeedCurve& c = motor.curve();
+    if (p.starter.kind != StarterParams::Kind::DirectOnLine || p.law == TorqueSpeedCurveParams::Law::Linear) return;
+    const double Mn = p.ratedTorque, wc = p.synchronousSpeed;
+    double staticMax = 0;
+    for (int i = 0; i <= 2000; ++i) staticMax = std::max(staticMax, c.torque(wc * i / 2000));
+    if (!(p.ratedCurrent > 0 && p.ratedPowerFactor > 0 && p.lockedRotorCurrentRatio > 0 && p.ratedEfficiency > 0)) {
+        scene.note("force " + spec.name + " switch-on peak",
+                   "not estimated: a static curve has no switch-on transient, so its peak torques are no design load; "
+                   "rated_current, rated_power_factor, locked_rotor_current_ratio and rated_efficiency give the dq "
+                   "machine's estimate (or use DqInductionMotor)");
+        return;
+    }
+    // Per-unit torques do not depend on the voltage level: V_n such that
+    // the data's input √3·V·I·cos φ is P_n/η; f from ωc with the nearest p at 50 Hz.
+    MotorDatasheet d;
+    d.ratedPower = Mn * p.ratedSpeed;
+    d.ratedSpeed = p.ratedSpeed;
+    d.ratedCurrent = p.ratedCurrent;
+    d.powerFactor = p.ratedPowerFactor;
+    d.efficiency = p.ratedEfficiency;
+    d.lineVoltage = d.ratedPower / (p.ratedEfficiency * std::sqrt(3.0) * p.ratedCurrent * p.ratedPowerFactor);
+    d.lockedRotorTorqueRatio = c.torque(0) / Mn;
+    d.breakdownTorqueRatio = staticMax / Mn;
+    d.lockedRotorCurrentRatio = p.lockedRotorCurrentRatio;
+    d.polePairs = std::max(1, static_cast<int>(std::lround(2 * M_PI * 50 / wc)));
+    d.frequency = d.polePairs * wc / (2 * M_PI);
+    if (!checkDatasheet(d).key.empty()) return;
+    const CageFitResult fit = fitCageCircuit(d, 2);
+    if (fit.worstResidual > 0.05) {
+        scene.note("force " + spec.name + " switch-on peak",
+                   "not estimated: no double-cage circuit fits its data within 5 %");
+        return;
+    }
+    const double peak = cageSwitchOnPeakTorque(fit.circuit, fit.phaseVoltage, d.frequency, d.polePairs, 3.0);
+    scene.addDerivedValue({spec.name + ".dq_switch_on_peak_estimate", peak, "N*m",
+                           "switch-on peak air-gap torque of the dq machine fitted to the same data (double cage, "
+                           "CageCircuitFit), rotor held for the first 3 cycles: an estimate, not this run's"});
+    scene.addDerivedValue({spec.name + ".static_curve_peak", staticMax, "N*m",
+                           "largest torque of the static torque-speed curve"});
+}
+
 void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     const SceneBody* shaft = scene.findBody(spec.text("body"));
     const InductionMotorParams p = motorParamsOf(spec);
@@ -628,6 +677,7 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
         scene.addDerivedValue({spec.name + ".breakdown_speed", c.pointSpeeds()[k], "rad/s",
                                "speed of the largest torque"});
     }
+    addSwitchOnPeakEstimate(spec, scene, *impl);
     scene.note("force " + spec.name + " (InductionMotor, " + spec.text("law") + ", " + Starter::kindName(st.kind) + ")",
                "drives body " + shaft->name);
 }

@@ -20,7 +20,10 @@
 // stator-fixed frame and takes the torque as (3/2)·p·Im(conj(ψ_s)·i_s).
 // Integrated here by the classic fixed-step fourth-order Runge–Kutta.
 
+#include <complex>
 #include <functional>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace milldyn::oracles {
@@ -83,6 +86,75 @@ struct DqHeldResponse {
     double statorCurrent = 0;  ///< rms phase current |i_s|/√2 [A]
 };
 DqHeldResponse dqHeldResponse(const DqMachine& machine, double slip, double u, double dudt);
+
+
+/// The extended machine and supply of dqMachineRun (issue 28): a second
+/// rotor cage, a slip-ring rotor's added resistance, the stator opened for
+/// intervals (an open star–delta transition, a supply interruption), the
+/// supply's phase steps, a V/f converter's frequency ramp and a source
+/// impedance. Written from the same textbook equations in the
+/// synchronously rotating frame, the frame now turning with the supply's
+/// angle θ(t) (Krause's arbitrary frame, eq 6.5-1 ff., ω = dθ/dt), with
+/// the winding currents as states.
+struct DqMachineExtended {
+    DqMachine base;
+    double rr2 = 0, llr2 = 0;  ///< second cage [ohm], [H]; 0: single cage
+    /// Source impedance at the rated winding voltage [ohm], [H]; seen
+    /// through the starter's voltage factor u as u²·(R, L), added in series
+    /// with the stator (its inductance to L_s: the currents stay the states).
+    double sourceR = 0, sourceL = 0;
+};
+
+struct DqSupplyExtended {
+    /// Voltage factor u(t) on the windings (star 1/√3, soft start ramp,
+    /// converter boost + (1 − boost)·f), given by the caller as a function
+    /// of time (steps switch at a step boundary).
+    std::function<double(double)> voltage = [](double) { return 1.0; };
+    /// Supply frequency over rated f(t) [-] (converter); θ(t) = ω_e·∫f dt.
+    std::function<double(double)> frequency = [](double) { return 1.0; };
+    /// Phase added to θ from `phaseStepTime` on [rad] (delta's +π/6).
+    double phaseStep = 0, phaseStepTime = std::numeric_limits<double>::infinity();
+    /// Rotor resistance multiplier of the first cage r(t) [-].
+    std::function<double(double)> rotorResistanceRatio = [](double) { return 1.0; };
+    /// Stator open over [from, to) intervals [s] (step boundaries).
+    std::vector<std::pair<double, double>> openIntervals;
+};
+
+struct DqSampleExtended {
+    DqSample base;
+    double voltageDip = 0;  ///< 1 − |v_pcc|/|e| (0 without a source) [-]
+};
+
+/// As dqMachineStart, for the extended machine and supply: from rest,
+/// unexcited, fixed-step RK4 of step h (every switch on a step boundary).
+std::vector<DqSampleExtended> dqMachineRun(const DqMachineExtended& machine, const DqSupplyExtended& supply, double J,
+                                           const std::function<double(double)>& loadTorque, double h, double endTime,
+                                           int sampleEvery);
+
+/// Steady state of the extended machine (double cage) at slip s, rated
+/// voltage: the T circuit's torque and rms stator current, from the same
+/// equations with d/dt = 0 in the synchronous frame.
+DqHeldResponse dqHeldResponseExtended(const DqMachineExtended& machine, double slip);
+
+/// The machine driving a belt (or any torsional spring–damper of ratio n =
+/// ω_motor/ω_driven) to a loaded flywheel, linearized about its steady
+/// running: Krause's fifth-order model in currents (synchronous frame, where
+/// steady running is an equilibrium) with the chain
+///   J1·dω1/dt = T_e − k·φ − c·(ω1 − n·ω2),  dφ/dt = ω1 − n·ω2,
+///   J2·dω2/dt = n·(k·φ + c·(ω1 − n·ω2)) − T_L        (φ = θ1 − n·θ2),
+/// the Jacobian by central differences of these rates at the equilibrium
+/// (the slip where T_e = T_L/n on the stable branch, by bisection), its
+/// seven eigenvalues by Eigen, sorted by |imag| then real.
+struct DqBeltChain {
+    DqMachine machine;
+    double motorInertia = 0, flywheelInertia = 0;  ///< J1, J2 [kg*m^2]
+    double stiffness = 0, damping = 0, ratio = 1;  ///< k [N*m/rad], c [N*m*s/rad] on the motor shaft, n [-]
+    double loadTorque = 0;                         ///< T_L on the flywheel [N*m], constant
+};
+std::vector<std::complex<double>> dqBeltChainEigenvalues(const DqBeltChain& chain);
+/// Same chain with the machine as its static torque–speed slope at the
+/// operating point (the T circuit's dT/dω): three eigenvalues.
+std::vector<std::complex<double>> staticBeltChainEigenvalues(const DqBeltChain& chain);
 
 /// Time [s] at which a sampled run first reaches `fraction` of its last
 /// sample's speed, linearly interpolated between samples; NaN if never.

@@ -1,0 +1,48 @@
+#include "driver/analyses/MotorReports.h"
+
+#include "plugins/motors/DqInductionMotor.h"
+#include "plugins/motors/InductionMotor.h"
+#include "plugins/scene/Format.h"
+
+#include <string>
+
+namespace milldyn {
+
+void addMotorReports(const Scene& scene, const SimTK::State& last, AnalysisResult& result) {
+    auto derived = [&](const std::string& name) -> const DerivedValue* {
+        for (const auto& d : scene.derivedValues())
+            if (d.name == name) return &d;
+        return nullptr;
+    };
+    for (const auto& probe : scene.probes()) {
+        const std::string suffix = ".torque";
+        if (probe.role != ProbeRole::DriveTorque || probe.name.size() <= suffix.size()) continue;
+        const std::string name = probe.name.substr(0, probe.name.size() - suffix.size());
+        if (const auto* dq = scene.findElement<DqInductionMotor>(name); dq && dq->hasSource()) {
+            const DqInductionMotorParams& p = dq->params();
+            const double dip = dq->getPeakVoltageDip(last), limit = p.voltageDipLimit;
+            result.results.push_back({name + ".voltage_dip", dip, "1",
+                                      "largest voltage dip 1 − |v|/|e| at " + name +
+                                          "'s supply point over every accepted step (S_k = " +
+                                          formatNumber(p.shortCircuitPower / 1e6, 4) + " MVA, X/R = " +
+                                          formatNumber(p.sourceXR, 3) + ")"});
+            if (dip > limit)
+                result.notes.push_back("voltage dip: " + name + " dips its supply by " + formatNumber(100 * dip, 3) +
+                                       " %, above its voltage_dip_limit " + formatNumber(100 * limit, 3) +
+                                       " %: a gentler starter or a stiffer supply is needed");
+        }
+        if (scene.findElement<InductionMotor>(name)) {
+            const DerivedValue* estimate = derived(name + ".dq_switch_on_peak_estimate");
+            const DerivedValue* curve = derived(name + ".static_curve_peak");
+            if (estimate && curve && estimate->value > curve->value)
+                result.notes.push_back(
+                    "peak torque: " + name + " runs on a static torque-speed curve (largest torque " +
+                    formatNumber(curve->value, 4) + " N*m); the dq machine of the same data switched on line peaks at "
+                    "about " + formatNumber(estimate->value, 4) + " N*m (" + formatNumber(estimate->value / curve->value, 3) +
+                    " × it; fitted double cage, rotor held for the first 3 cycles): this run's peak torques are no "
+                    "design load (DqInductionMotor with the datasheet runs the transient)");
+        }
+    }
+}
+
+}  // namespace milldyn
