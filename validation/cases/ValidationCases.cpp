@@ -50,7 +50,7 @@ std::vector<ValidationRow> runValidationCases(const std::string& filter) {
     std::vector<CaseGroup> groups = {CaseGroup(burrMillCases), CaseGroup(rollCrusherCases),
                                      CaseGroup(planetaryGearCases), CaseGroup(planetaryBeltCases),
                                      CaseGroup(beadMillCases), CaseGroup(tumblingMillCases), CaseGroup(startCases), CaseGroup(dqStartCases),
-                                     CaseGroup(machineStartCases)};
+                                     CaseGroup(machineStartCases), CaseGroup(jawCrusherCases)};
     {
         const std::lock_guard<std::mutex> lock(g_pluginGroupsMutex);
         groups.insert(groups.end(), pluginGroups().begin(), pluginGroups().end());
