@@ -4,6 +4,7 @@
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/analyses/MotorReports.h"
+#include "plugins/loads/BreakawayResistance.h"
 #include "plugins/scene/Format.h"
 
 #include <algorithm>
@@ -125,6 +126,19 @@ SequenceLists sequencesAt(const Scene& scene, const SimTK::State& state) {
     return lists;
 }
 
+/// Hook (issue 27): "; <why>" for each BreakawayResistance still holding
+/// its shaft below its release speed at `end`, so a stall names the
+/// breakaway that was not passed; "" when none.
+std::string breakawayReasons(const Scene& scene, const ModelSpec& spec, const SimTK::State& end) {
+    std::string out;
+    for (const ElementSpec& e : spec.elements)
+        if (const auto* b = scene.findElement<BreakawayResistance>(e.name)) {
+            const std::string why = b->stallReason(e.name, end);
+            if (!why.empty()) out += "; " + why;
+        }
+    return out;
+}
+
 /**
  * The start verdict (a run from rest) over the start window, with the
  * starting sequences (starters, clutch engagements; Scene::startSequences)
@@ -184,7 +198,8 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
                                                     waiting + ")") +
                              "; there the drive torque is " + (drive.empty() ? "none" : drive) +
                              " against the load torque " + (load.empty() ? "none" : load) +
-                             " (each on its own shaft): the drive cannot take the load past this speed";
+                             " (each on its own shaft): the drive cannot take the load past this speed" +
+                             breakawayReasons(scene, spec, end);
     } else {
         result.verdict = "unfinished";
         result.verdictText = "start unfinished: " + body.name + " was at " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +

@@ -22,6 +22,8 @@ void registerBevelGearPair(ElementRegistry& registry);
 void registerShaftBearings(ElementRegistry& registry);
 void registerClutch(ElementRegistry& registry);
 void registerBrake(ElementRegistry& registry);
+void registerAngleLoad(ElementRegistry& registry);
+void registerBreakawayResistance(ElementRegistry& registry);
 
 void registerBuiltinElements(ElementRegistry& registry) {
     registerInductionMotor(registry);
@@ -44,6 +46,8 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerShaftBearings(registry);
     registerClutch(registry);
     registerBrake(registry);
+    registerAngleLoad(registry);
+    registerBreakawayResistance(registry);
 }
 
 }  // namespace milldyn

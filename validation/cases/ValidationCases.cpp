@@ -51,7 +51,7 @@ std::vector<ValidationRow> runValidationCases(const std::string& filter) {
                                      CaseGroup(planetaryGearCases), CaseGroup(planetaryBeltCases),
                                      CaseGroup(beadMillCases), CaseGroup(tumblingMillCases), CaseGroup(startCases), CaseGroup(dqStartCases),
                                      CaseGroup(machineStartCases), CaseGroup(chargePowerCases),
-                                     CaseGroup(gearboxCases)};
+                                     CaseGroup(gearboxCases), CaseGroup(jawCrusherCases)};
     {
         const std::lock_guard<std::mutex> lock(g_pluginGroupsMutex);
         groups.insert(groups.end(), pluginGroups().begin(), pluginGroups().end());

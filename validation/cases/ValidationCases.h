@@ -73,5 +73,7 @@ std::vector<ValidationRow> dqStartCases(const std::string& filter);
 /// a slipping V-belt, the burr mill started loaded
 /// (validation/cases/MachineStartCases.cpp).
 std::vector<ValidationRow> machineStartCases(const std::string& filter);
+/// The 900 x 600 mm jaw crusher (issue 27; validation/cases/JawCrusherCases.cpp).
+std::vector<ValidationRow> jawCrusherCases(const std::string& filter);
 
 }  // namespace milldyn
