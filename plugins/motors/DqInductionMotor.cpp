@@ -252,7 +252,10 @@ void registerDqInductionMotor(ElementRegistry& registry) {
         P::quantity("rotor_leakage_inductance", "H", "Lrσ' per phase, referred to the stator").above(0),
         P::quantity("main_inductance", "H", "Lm per phase").above(0),
         P::quantity("pole_pairs", "1", "p").optional(2.0).atLeast(1).atMost(50),
-        P::quantity("phase_voltage", "V", "rms voltage on a phase winding (star_delta: on the winding in delta, the line voltage)").above(0),
+        // At most 100 kV (the largest motors are 13.8 kV line): the coupled
+        // electromechanical frequency grows with the voltage, and so does the
+        // work; 1e9 V took 207 s for 0.05 s simulated (issue 26 item 7).
+        P::quantity("phase_voltage", "V", "rms voltage on a phase winding (star_delta: on the winding in delta, the line voltage)").above(0).atMost(1e5),
         P::quantity("frequency", "Hz", "supply frequency f").optional(50.0).above(0),
         P::choice("starter", starters, "how the motor is started").optional("direct_on_line"),
         P::quantityList("switch_times", "s", 1, 1, "star_delta: time of the switch from star to delta")
