@@ -204,6 +204,7 @@ public:
 
     ModelSpec read(const std::string& text, const std::vector<Override>& overrides) {
         checkModelText(text, m_file, "");
+        for (const auto& o : overrides) checkOverridePath(o.path);
         for (const auto& o : overrides) checkModelText(o.path + "=" + o.value, "<--set " + o.path + ">", "");
         YAML::Node root = loadOneDocument(text, m_file, "");
         if (!root || root.IsNull()) throw SpecError({m_file, 1, 1}, "", "the model file is empty");
@@ -250,7 +251,23 @@ public:
         if (root["outputs"]) readOutputs(root["outputs"], spec.outputs);
         spec.readNotes = m_readNotes;
         checkRunSize(spec);
+        checkSwitchOffAtStart(spec);
         return spec;
+    }
+
+    /// A motor switched off at 0 s in a start from rest never drives: the
+    /// run was judged a stall ("the drive cannot take the load"), which
+    /// says something false about the drive (issue 26 item 5). From a
+    /// steady or given state the same key is a coast-down from t = 0, and
+    /// stays allowed.
+    static void checkSwitchOffAtStart(const ModelSpec& spec) {
+        if (spec.scenario.type != "transient" || spec.scenario.text("initial_state") != "rest") return;
+        for (const auto& e : spec.elements)
+            if (e.has("switch_off_time") && e.number("switch_off_time") == 0)
+                throw e.error("switch_off_time",
+                              "0 s switches " + e.name + " off before it drives: from initial_state rest it never "
+                              "starts anything; give a time > 0, or start from steady running "
+                              "(initial_state: steady) for a coast-down from t = 0");
     }
 
     /// Work the run would do, refused up front with its estimate rather
@@ -272,6 +289,7 @@ public:
     }
     static constexpr double kMaxSamples = 1e7;  ///< rows of one run's table
     static constexpr double kMaxSteps = 1e9;    ///< steps the max_step forces
+    static constexpr double kMinBodyInertia = 1e-9;  ///< kg*m^2
 
 private:
     std::string m_file;
@@ -279,6 +297,13 @@ private:
     std::string* m_resolved;  ///< if set: the document after includes, preset and --set
     std::vector<std::pair<YAML::Node, SourceLocation>> m_overridden;  // node, "<--set path>"
     mutable std::vector<std::string> m_readNotes;  // ModelSpec::readNotes
+
+    /// A body's or element's name: its outputs' column prefix and the
+    /// handle of --set, so never empty nor blank (issue 26 item 7).
+    void checkName(const YAML::Node& node, const std::string& key, const std::string& name) const {
+        if (name.find_first_not_of(" \t") == std::string::npos)
+            throw error(node, key, "a name must not be empty: it prefixes the outputs' columns and --set paths");
+    }
 
     bool isOverridden(const YAML::Node& n) const {
         for (const auto& o : m_overridden)
@@ -663,6 +688,7 @@ private:
             BodySpec b;
             b.where = where(n);
             b.name = scalar(required(n, "name", "bodies."), "name");
+            checkName(n["name"], "name", b.name);
             const std::string prefix = b.name + ".";
             checkKeys(n, prefix, {"name", "inertia", "mass", "mass_centre", "joint", "initial_angle", "initial_speed",
                                   "fidelity"});
@@ -671,9 +697,16 @@ private:
             if (spec.findBody(b.name)) throw error(n["name"], "name", "a body named '" + b.name + "' exists already");
             const YAML::Node inertia = required(n, "inertia", prefix);
             b.inertia = readNumber(inertia, prefix + "inertia", "kg*m^2");
+            // Bounded below: 4.9e-324 kg*m^2 passed and the first torque's
+            // acceleration overflowed, blamed on the motor (issue 26 item 7).
             if (!(b.inertia > 0))
                 throw error(inertia, prefix + "inertia",
                             "moment of inertia must be > 0 kg*m^2, got " + formatNumber(b.inertia));
+            if (!(b.inertia >= kMinBodyInertia))
+                throw error(inertia, prefix + "inertia",
+                            "moment of inertia must be >= " + formatNumber(kMinBodyInertia) +
+                                " kg*m^2 (a 3 mm steel disc; below it any torque's acceleration is beyond the "
+                                "integrator), got " + formatNumber(b.inertia));
             if (n["mass"]) {
                 b.mass = readNumber(n["mass"], prefix + "mass", "kg");
                 if (b.mass < 0) throw error(n["mass"], prefix + "mass", "mass must be >= 0 kg, got " + formatNumber(b.mass));
@@ -733,6 +766,7 @@ private:
             e.type = scalar(type, "type");
             const YAML::Node nameNode = required(n, "name", e.type + ".");
             e.name = scalar(nameNode, "name");
+            checkName(nameNode, "name", e.name);
             e.fidelity = readMemberLevels(n, e.name + ".", spec);
             // Names are unique within each fidelity level: two elements of
             // disjoint levels (the 2-mass and 10-mass load) may share one.
@@ -1264,11 +1298,25 @@ std::string gravityWarning(const ModelSpec& spec, const ModelFileReader& reader)
            " loaded by weight; add e.g. gravity: [0, -9.80665 m/s^2, 0] (without it their weight is 0)";
 }
 
+void checkOverridePath(const std::string& path) {
+    // The deepest path a model has is a handful of segments; thousands took
+    // 43 s (each segment a tree walk) and were echoed whole in the error
+    // (issue 26 item 7).
+    const std::size_t segments = static_cast<std::size_t>(std::count(path.begin(), path.end(), '.')) + 1;
+    if (segments <= kMaxOverrideSegments && path.size() <= kMaxOverridePathLength) return;
+    const std::string shown = path.size() <= 40 ? path : path.substr(0, 40) + "...";
+    throw SpecError({"<--set " + shown + ">", 1, 1}, shown,
+                    "the path has " + std::to_string(segments) + " segments and " + std::to_string(path.size()) +
+                        " characters: at most " + std::to_string(kMaxOverrideSegments) + " segments and " +
+                        std::to_string(kMaxOverridePathLength) + " characters");
+}
+
 Override parseOverride(const std::string& text) {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
         throw SpecError({"<--set>", 1, 1}, text, "expected --set path=value");
     Override o{text.substr(0, eq), text.substr(eq + 1)};
+    checkOverridePath(o.path);
     if (o.path.front() == '.' || o.path.back() == '.' || o.path.find("..") != std::string::npos)
         throw SpecError({"<--set>", 1, 1}, o.path, "malformed path");
     return o;

@@ -50,6 +50,11 @@ void checkModelText(const std::string& text, const std::string& file, const std:
 
 /// Parses "path=value"; throws SpecError located at the command line.
 Override parseOverride(const std::string& text);
+/// The longest --set path: segments (a.b.c has 3) and characters.
+constexpr std::size_t kMaxOverrideSegments = 32;
+constexpr std::size_t kMaxOverridePathLength = 512;
+/// Throws SpecError (the path shortened to 40 characters) for a longer path.
+void checkOverridePath(const std::string& path);
 
 /// Reads and checks a model file. Throws SpecError on any bad input. Only
 /// regular files are read (a FIFO or device is refused, never waited on);

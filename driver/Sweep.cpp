@@ -53,8 +53,9 @@ std::pair<double, std::string> splitValue(const std::string& option, const std::
 
 /// Splits "path=rest" and rest on ':'.
 std::pair<std::string, std::vector<std::string>> splitSpec(const std::string& option, const std::string& text) {
-    checkModelText(text, "<" + option + ">");  // the path lands in JSON point files
     const auto eq = text.find('=');
+    if (eq != std::string::npos) checkOverridePath(text.substr(0, eq));  // before any echo of it
+    checkModelText(text, "<" + option + ">");  // the path lands in JSON point files
     if (eq == std::string::npos || eq == 0) throw optionError(option, text, "expected path=a:b" + std::string(option == "--grid" ? ":n" : ""));
     std::vector<std::string> parts;
     std::stringstream ss(text.substr(eq + 1));
@@ -297,13 +298,26 @@ std::vector<Override> SweepPlan::overrides(std::size_t point) const {
     return out;
 }
 
+/// Both ends in one unit, or both bare (SI): a bare number at one end was
+/// read in the other end's unit (`25 %:0.45` swept to 0.45 %), which the
+/// user may have meant as SI (45 %): refused, not guessed (issue 26 item 7).
+static void checkEndUnits(const std::string& option, const std::string& text, const std::string& endA,
+                   const std::string& unitA, const std::string& endB, const std::string& unitB) {
+    if (unitA.empty() != unitB.empty())
+        throw optionError(option, text,
+                          "give the unit on both ends or on neither: '" + (unitA.empty() ? endA : endB) +
+                              "' is a bare number (SI) and '" + (unitA.empty() ? endB : endA) + "' is in '" +
+                              (unitA.empty() ? unitB : unitA) + "'");
+    if (unitB != unitA)
+        throw optionError(option, text, "both ends must be in the same unit ('" + unitA + "' and '" + unitB + "')");
+}
+
 SweepAxis parseGrid(const std::string& text) {
     const auto [path, parts] = splitSpec("--grid", text);
     if (parts.size() != 3) throw optionError("--grid", text, "expected path=a:b:n");
     const auto [a, unitA] = splitValue("--grid", text, parts[0]);
     const auto [b, unitB] = splitValue("--grid", text, parts[1]);
-    if (!unitB.empty() && unitB != unitA)
-        throw optionError("--grid", text, "both ends must be in the same unit ('" + unitA + "' and '" + unitB + "')");
+    checkEndUnits("--grid", text, parts[0], unitA, parts[1], unitB);
     char* end = nullptr;
     const long n = std::strtol(parts[2].c_str(), &end, 10);
     if (*end != '\0' || n < 1 || n > 100000) throw optionError("--grid", text, "n must be a whole number 1..100000");
@@ -321,8 +335,7 @@ SweepAxis parseRange(const std::string& text) {
     if (parts.size() != 2) throw optionError("--range", text, "expected path=a:b");
     const auto [a, unitA] = splitValue("--range", text, parts[0]);
     const auto [b, unitB] = splitValue("--range", text, parts[1]);
-    if (!unitB.empty() && unitB != unitA)
-        throw optionError("--range", text, "both ends must be in the same unit ('" + unitA + "' and '" + unitB + "')");
+    checkEndUnits("--range", text, parts[0], unitA, parts[1], unitB);
     return {path, unitA, {a, b}, false};
 }
 

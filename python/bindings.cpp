@@ -21,6 +21,7 @@
 #include <tuple>
 
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <thread>
 
@@ -376,7 +377,9 @@ PYBIND11_MODULE(_milldyn, m) {
             d["multibody"] = r.multibody ? py::object(py::float_(*r.multibody)) : py::object(py::none());
             d["oracle"] = r.oracle;
             d["paper"] = r.paper ? py::object(py::float_(*r.paper)) : py::object(py::none());
-            d["rel_error"] = r.relError;
+            // No relative error to an oracle of 0 (null in --json too): the absolute one.
+            d["rel_error"] = r.oracle == 0 ? py::object(py::none()) : py::object(py::float_(r.relError));
+            if (r.oracle == 0) d["abs_error"] = std::abs(judgedValue(r) - r.oracle);
             d["tolerance"] = r.tolerance;
             d["status"] = r.status;
             d["note"] = r.note;

@@ -9,6 +9,7 @@
 #include "plugins/scene/Format.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <cmath>
 #include <set>
@@ -475,6 +476,19 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
     p.smoothingSpeed = spec.params.at("smoothing_speed").given ? spec.number("smoothing_speed") : 0.02 * criticalSpeed;
     const bool initialLagGiven = spec.params.at("initial_lag").given;
     const double initialLag = spec.number("initial_lag");
+    const double chargeMass =
+        p.bulkDensity * p.length * p.drumRadius * p.drumRadius * circular_segment::calcAreaFactor(p.halfAngle) / 2;
+    if (!(chargeMass >= std::numeric_limits<double>::min())) {
+        // m ≈ (2/3)·ρ·l·r²·γ³ for a thin segment: a half-angle so small that
+        // the mass underflows is no charge (issue 26 item 7).
+        const double smallest =
+            std::cbrt(1.5 * std::numeric_limits<double>::min() / (p.bulkDensity * p.length * p.drumRadius * p.drumRadius));
+        const bool byAngle = spec.has("half_angle") && spec.params.at("half_angle").given;
+        throw spec.error(byAngle ? "half_angle" : "fill",
+                         "the segment's half-angle " + formatNumber(p.halfAngle) + " rad gives a charge of mass " +
+                             formatNumber(chargeMass) + " kg: with these drum_radius, length and bulk_density it must be at least " +
+                             formatNumber(smallest) + " rad");
+    }
     auto* impl = new SegmentCharge(scene.matter(), carrier, drum.mobod, p);
     if (p.motion == ChargeMotionMode::TorqueArm && p.powerLaw != ChargePowerLaw::Lag)
         checkCorrelation(spec, *impl);

@@ -723,8 +723,11 @@ void registerDqInductionMotor(ElementRegistry& registry) {
         P::quantity("rotor_leakage_inductance_2", "H", "circuit, double cage: the second cage's Lrσ,2'").optional(0.0).above(0),
         P::quantity("main_inductance", "H", "circuit: Lm per phase").optional(0.0).above(0),
         P::quantity("pole_pairs", "1", "p (datasheet: from rated_speed)").optional(2.0).atLeast(1).atMost(50),
+        // At most 100 kV (the largest motors are 13.8 kV line): the coupled
+        // electromechanical frequency grows with the voltage, and so does the
+        // work; 1e9 V took 207 s for 0.05 s simulated (issue 26 item 7).
         P::quantity("phase_voltage", "V", "circuit: rms voltage on a phase winding (star_delta: on the winding in delta, "
-                                          "the line voltage)").optional(0.0).above(0),
+                                          "the line voltage)").optional(0.0).above(0).atMost(1e5),
         P::quantity("frequency", "Hz", "supply frequency f").optional(50.0).above(0),
         P::quantity("rated_power", "W", "datasheet: rated shaft power P_n").optional(0.0).above(0),
         P::quantity("rated_speed", "rad/s", "datasheet: rated speed").optional(0.0).above(0),

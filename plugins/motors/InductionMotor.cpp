@@ -159,8 +159,23 @@ double InductionMotor::setRampHold(SimTK::State& state, double held) const {
     return 1;
 }
 
+double InductionMotor::rotorSlipSpeed(double omega, const SupplyState& u) const {
+    // f·ωc − ω, measured from where the torque is 0: for a linear law whose
+    // printed zero ω0 = M00/b0 is not ωc that is r·(ω0 − ωc) further.
+    const double wc = m_params.synchronousSpeed;
+    return u.frequency * wc - omega + u.resistance * (m_curve.zeroTorqueSpeed() - wc);
+}
+
 double InductionMotor::airGapPowerAtSpeed(double omega, const SupplyState& u) const {
-    return torqueAtSpeed(omega, u) * u.frequency * m_params.synchronousSpeed;
+    const double wc = m_params.synchronousSpeed;
+    return torqueAtSpeed(omega, u) * (u.frequency * wc + u.resistance * (m_curve.zeroTorqueSpeed() - wc));
+}
+
+double InductionMotor::calcRotorHeat(const SimTK::State& state) const {
+    if (!isOn(state)) return 0;
+    const double omega = m_shaft.getOneU(state, SimTK::MobilizerUIndex(0));
+    const SupplyState u = supply(state);
+    return torqueAtSpeed(omega, u) * rotorSlipSpeed(omega, u);
 }
 
 double InductionMotor::statorCopperLossAtSpeed(double omega, const SupplyState& u) const {
@@ -174,7 +189,7 @@ double InductionMotor::statorCopperLossAtSpeed(double omega, const SupplyState& 
         return m_statorCopperRated * u.connection * phase * phase;
     }
     // No current data: I1 ≈ I2', so P_Cu1 ∝ the heat in the rotor's own resistance.
-    const double rotorOwnHeat = torqueAtSpeed(omega, u) * slipSpeed / u.resistance;
+    const double rotorOwnHeat = torqueAtSpeed(omega, u) * rotorSlipSpeed(omega, u) / u.resistance;
     return m_statorCopperRated * rotorOwnHeat / (m_params.ratedTorque * (wc - m_params.ratedSpeed));
 }
 
@@ -443,6 +458,18 @@ void crossCheckInductionMotor(const ElementSpec& e) {
                                      std::to_string(e.numbers(k).size()));
         if (e.numbers("curve_speeds").back() > wc)
             throw e.error("curve_speeds", "speeds must not exceed the synchronous speed (" + num(wc) + " rad/s)");
+        // A motor drives below synchronous speed and has no torque at it
+        // (no slip, no rotor current): the rotor heat M·(ωc − ω) is never
+        // negative, and above ωc the curve generates (docs/model-format.md).
+        const std::vector<double>& torques = e.numbers("curve_torques");
+        for (std::size_t k = 0; k < torques.size(); ++k)
+            if (torques[k] < 0)
+                throw e.error("curve_torques", "item " + std::to_string(k + 1) + " is " + num(torques[k]) +
+                                                   " N*m: torques below synchronous speed must be >= 0 N*m");
+        if (e.numbers("curve_speeds").back() == wc && torques.back() != 0)
+            throw e.error("curve_torques", "the last point is at synchronous speed, where the torque must be 0 N*m "
+                                           "(got " + num(torques.back()) + " N*m): end the table there with 0, "
+                                           "or below it (the point (synchronous_speed, 0) is then added)");
     }
     const std::string starter = e.text("starter");
     if (e.has("switch_times") && e.has("switch_speeds"))
@@ -594,7 +621,7 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     scene.addProbe({spec.name + ".power", "W", ProbeRole::Generic, SimTK::Stage::Dynamics,
                     [impl, mobod](const SimTK::State& s) { return impl->calcTorque(s) * pinSpeed(s, mobod); }});
     scene.addProbe({spec.name + ".rotor_loss", "W", ProbeRole::Generic, SimTK::Stage::Dynamics,
-                    [impl](const SimTK::State& s) { return impl->calcTorque(s) * impl->calcSlipSpeed(s); }});
+                    [impl](const SimTK::State& s) { return impl->calcRotorHeat(s); }});
     if (impl->curve().hasCurrent())
         scene.addProbe({spec.name + ".current", "A", ProbeRole::Generic, SimTK::Stage::Dynamics,
                         [impl](const SimTK::State& s) { return impl->calcCurrent(s); }});
@@ -650,7 +677,7 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
                    "not available: give rated_efficiency and no_load_loss for the electrical input and stator losses");
     }
     scene.addEnergyFlow({spec.name + ".rotor_heat", EnergyFlow::Kind::Dissipation,
-                         [impl](const SimTK::State& s) { return impl->calcTorque(s) * impl->calcSlipSpeed(s); },
+                         [impl](const SimTK::State& s) { return impl->calcRotorHeat(s); },
                          "heat in the rotor circuit of " + spec.name + " (and its starting resistance): M·(f·ωc − ω)"});
 
     const TorqueSpeedCurve& c = impl->curve();

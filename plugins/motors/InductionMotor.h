@@ -69,6 +69,10 @@ std::string describeRatedLosses(const TorqueSpeedCurveParams& curve, double rate
  * circuit (and its starting resistance) turns P_ag − M·ω = M·Δω into heat
  * (a dissipation "NAME.rotor_heat"), so a direct-on-line start of a pure
  * inertia J to ωc dissipates ½·J·ωc² in the rotor whatever the curve.
+ * Every law has M·(ω0 − ω) >= 0 with M(ω0) = 0 (TorqueSpeedCurve), so the
+ * heat is never negative. A linear law with printed M00, b0 has its zero at
+ * ω0 = M00/b0, not ωc: its slip speed is counted from there,
+ * Δω_r = Δω + r·(ω0 − ωc), P_ag = M·(ω + Δω_r), heat M·Δω_r = r·M²/(k·V²·b0).
  * Without a rated efficiency the air-gap power is the motor's input (an
  * EnergyFlow source). With one (η_n, and the no-load loss P_0) the
  * electrical input is the source and the stator-side losses a second
@@ -167,8 +171,13 @@ public:
     bool hasLosses() const { return m_params.ratedEfficiency > 0; }
     /// Stator copper loss at the rated point P_Cu1,n [W] (0 without losses).
     double ratedStatorCopperLoss() const { return m_statorCopperRated; }
-    /// Air-gap power M·f·ωc at ω [rad/s] under a supply [W].
+    /// Rotor slip speed f·ωc − ω + r·(ω0 − ωc) at ω [rad/s] under a supply
+    /// [rad/s] (ω0 = curve().zeroTorqueSpeed(); ωc but for a printed linear law).
+    double rotorSlipSpeed(double omega, const SupplyState& supply) const;
+    /// Air-gap power M·(ω + rotorSlipSpeed) (M·f·ωc when ω0 = ωc) at ω [rad/s] under a supply [W].
     double airGapPowerAtSpeed(double omega, const SupplyState& supply) const;
+    /// Rotor heat M·rotorSlipSpeed in this state (0 when off) [W], never negative.
+    double calcRotorHeat(const SimTK::State& state) const;
     /// Stator copper loss P_Cu1 at ω under a supply [W] (0 without losses).
     double statorCopperLossAtSpeed(double omega, const SupplyState& supply) const;
     /// No-load (iron, friction and windage) loss under a supply [W].

@@ -125,6 +125,7 @@ TorqueSpeedCurve::TorqueSpeedCurve(const TorqueSpeedCurveParams& p) : m_params(p
     if (p.linearStallTorque > 0 && p.linearSlope > 0) {
         m_M00 = p.linearStallTorque;
         m_b0 = p.linearSlope;
+
     } else {
         m_M00 = Mn * wc / slipSpeed;  // eq (4)
         m_b0 = Mn / slipSpeed;        // eq (4)
@@ -176,6 +177,12 @@ TorqueSpeedCurve::TorqueSpeedCurve(const TorqueSpeedCurveParams& p) : m_params(p
                 badParameter("curve_speeds", p.tableSpeeds[k], "speeds must increase strictly");
         }
         if (p.tableSpeeds.front() < 0) badParameter("curve_speeds", p.tableSpeeds.front(), "must be >= 0");
+        // Below ωc a motor drives (M >= 0, rotor heat M·(ωc − ω) >= 0); at ωc
+        // it has no slip, no rotor current and no torque.
+        for (double M : p.tableTorques)
+            if (M < 0) badParameter("curve_torques", M, "torques below synchronous speed must be >= 0");
+        if (p.tableSpeeds.back() == wc && p.tableTorques.back() != 0)
+            badParameter("curve_torques", p.tableTorques.back(), "the torque at synchronous speed must be 0");
         if (p.tableSpeeds.back() > wc) badParameter("curve_speeds", p.tableSpeeds.back(), "must not exceed synchronous_speed");
         m_pointSpeeds = p.tableSpeeds;
         m_pointTorques = p.tableTorques;
@@ -222,6 +229,10 @@ double TorqueSpeedCurve::torque(double omega) const {
         case Law::Table: return m_torque(omega);
     }
     return 0;
+}
+
+double TorqueSpeedCurve::zeroTorqueSpeed() const {
+    return m_params.law == TorqueSpeedCurveParams::Law::Linear ? m_M00 / m_b0 : m_params.synchronousSpeed;
 }
 
 double TorqueSpeedCurve::current(double omega) const {

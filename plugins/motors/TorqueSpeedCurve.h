@@ -68,7 +68,8 @@ struct TorqueSpeedCurveParams {
     /// sk = sn·(λ + √(λ² − 1)) gives ωk = ωc·(1 − sk).
     double breakdownSpeed = 0;
     /// Table: speeds [rad/s] strictly increasing from >= 0 to <= ωc, torques
-    /// [N*m] at them; (ωc, 0) is appended when the last speed is below ωc.
+    /// [N*m] >= 0 at them, 0 at ωc; (ωc, 0) is appended when the last speed
+    /// is below ωc.
     std::vector<double> tableSpeeds, tableTorques;
     /// Table: stator (line) currents [A] at the same speeds (optional).
     std::vector<double> tableCurrents;
@@ -116,7 +117,9 @@ ModifiedKlossFit fitModifiedKloss(double ratedSlip, double breakdownRatio, doubl
  *
  * <pre>
  *   slip s = (ωc − ω)/ωc, sn = (ωc − ωn)/ωc
- *   Linear (seed 003 eqs 3-4): M = M00 − b0·ω, M00 = Mn·ωc/(ωc − ωn), b0 = Mn/(ωc − ωn)
+ *   Linear (seed 003 eqs 3-4): M = M00 − b0·ω, M00 = Mn·ωc/(ωc − ωn), b0 = Mn/(ωc − ωn);
+ *               printed M00 and b0 put its zero ω0 = M00/b0 near, not at, ωc
+ *               (zeroTorqueSpeed: where the rotor has no slip for this law)
  *   Kloss:      M = 2·Mk·s·sk/(s² + sk²), Mk = λ·Mn, sk = sn·(λ + √(λ² − 1))   (M(ωn) = Mn)
  *   Modified Kloss (stator resistance kept; Chilikin, "Electric drive",
  *   ch. 3 "Characteristics of the induction motor", eq. for M with
@@ -133,7 +136,12 @@ ModifiedKlossFit fitModifiedKloss(double ratedSlip, double breakdownRatio, doubl
  * </pre>
  *
  * Below ω = 0 the catalogue and table curves hold the locked-rotor value;
- * above ωc they continue with the slope at ωc (generating). Current: the
+ * above ωc they continue with the end tangent at ωc, which is <= 0 since
+ * the last torque is 0 and the others >= 0 (generating; 0 if the table's
+ * last two torques are 0). Every law keeps M·(ω0 − ω) >= 0 at every speed
+ * (ω0 = zeroTorqueSpeed(), ωc but for the linear law):
+ * the rotor heat is never negative (the monotone cubic stays between its
+ * points' torques, all >= 0 below ωc). Current: the
  * table law's monotone cubic through its currents, or, for the other laws
  * given I_N, cos φ_N and I_LR/I_N, the circle diagram (CurrentCircle) at
  * the slip; otherwise none (NaN).
@@ -159,6 +167,9 @@ public:
     double asymmetry() const { return m_asymmetry; }
     double linearStallTorque() const { return m_M00; }
     double linearSlope() const { return m_b0; }
+    /// The speed ω0 at which the natural torque is 0 [rad/s]: ωc, or M00/b0
+    /// for the linear law.
+    double zeroTorqueSpeed() const;
     /// The interpolation's points (catalogue and table laws): speeds [rad/s], torques [N*m].
     const std::vector<double>& pointSpeeds() const { return m_pointSpeeds; }
     const std::vector<double>& pointTorques() const { return m_pointTorques; }

@@ -451,9 +451,12 @@ void registerBeltDrive(ElementRegistry& registry) {
         P::quantity("pretension", "N", "elastic: T0 in each span at rest").optional(0.0).atLeast(0),
         P::quantity("span_stiffness", "N/m", "elastic: k_s = EA/span length of each span").optional(1.0).above(0),
         P::quantity("span_damping", "N*s/m", "elastic: c_s of each span").optional(1.0).above(0),
+        // At most 10 (a V-belt's μ/sin(half groove angle) is about 1.7): the
+        // grip e^(μθ) stays finite (issue 26 item 7).
         P::quantity("friction_coefficient", "1", "μ belt on sheave (V-belt: μ/sin(half groove angle))")
             .optional(0.3)
-            .atLeast(0),
+            .atLeast(0)
+            .atMost(10),
     };
     s.crossCheck = [](const ElementSpec& e) {
         if (e.text("carrier") == e.text("drum")) throw e.error("drum", "the drum and the carrier must be different bodies");

@@ -1,6 +1,7 @@
 #include "plugins/transmissions/GearPair.h"
 
 #include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/Format.h"
 
 #include <cmath>
 #include <sstream>
@@ -282,6 +283,20 @@ void buildGearPair(const ElementSpec& spec, Scene& scene) {
     p.backlash = spec.number("backlash");
     p.axialPosition = spec.number("axial_position");
     readTeeth(spec, p);
+    if (p.backlash > 0) {
+        // Play along the line of action beyond the tooth spacing there (the
+        // base pitch p_bt = 2π·r1·cos α_t/z1) is no gear (issue 26 item 7);
+        // without tooth counts z1 = 1 bounds it by the whole base circle.
+        const double z1 = p.teeth1 > 0 ? p.teeth1 : 1;
+        const double basePitch =
+            2 * Pi * p.geometry.pitchRadius1 * std::cos(p.geometry.calcTransversePressureAngle()) / z1;
+        if (!(p.backlash < basePitch))
+            throw spec.error("backlash", "backlash " + formatNumber(p.backlash) +
+                                             " m along the line of action must be below the base pitch 2π·r1·cos(α_t)/z1 = " +
+                                             formatNumber(basePitch) + " m" +
+                                             (p.teeth1 > 0 ? " (z1 = " + formatNumber(z1) + ")"
+                                                           : " (no teeth or module given: z1 = 1, the whole base circle)"));
+    }
     Vec3 between = g2.getDefaultInboardFrame().p() - g1.getDefaultInboardFrame().p();
     between[2] = 0;
     const std::string misfit = p.geometry.checkCentreDistance(between.norm());

@@ -189,7 +189,11 @@ void registerShaftBelt(ElementRegistry& registry) {
         P::quantity("pretension", "N", "T0 in each span at rest (all belts of the set)").atLeast(0),
         P::quantity("span_stiffness", "N/m", "k_s = EA/span length of each span (all belts of the set)").above(0),
         P::quantity("span_damping", "N*s/m", "c_s of each span").above(0),
-        P::quantity("friction_coefficient", "1", "μ belt on sheave (V-belt: μ/sin(half groove angle))").atLeast(0),
+        // At most 10 (a V-belt's μ/sin(half groove angle) is about 1.7): the
+        // grip e^(μθ) stays finite (μ ≈ 260 overflowed it; issue 26 item 7).
+        P::quantity("friction_coefficient", "1", "μ belt on sheave (V-belt: μ/sin(half groove angle))")
+            .atLeast(0)
+            .atMost(10),
     };
     s.crossCheck = [](const ElementSpec& e) {
         if (e.text("driver") == e.text("driven")) throw e.error("driven", "the driver and the driven must differ");

@@ -334,7 +334,8 @@ def _read_sweep_csv(path):
 def validate(filter=""):
     """Every oracle comparison whose case name contains ``filter`` (as
     ``milldyn validate``): a list of dicts with case, quantity, unit,
-    multibody, oracle, paper, rel_error, tolerance, status, note."""
+    multibody, oracle, paper, rel_error (None where the oracle is 0, with
+    abs_error), tolerance, status, note."""
     return _core.validate(filter)
 
 

@@ -25,6 +25,17 @@ TEST(ValidationTable, AbsoluteErrorWhereTheOracleIsZero) {
     EXPECT_FALSE(j[1].contains("abs_error")) << j.dump();
 }
 
+// Issue 26 item 5: the JSON kept rel_error 1.5e+299 beside abs_error; a
+// relative error to 0 means nothing: null.
+TEST(ValidationTable, JsonRelativeErrorIsNullWhereTheOracleIsZero) {
+    const ValidationRow zero = compareRow("gear_pair_x", "net torque", "N*m", 2.9e-17, 0.0, 1e-9);
+    const ValidationRow plain = compareRow("gear_pair_y", "torque", "N*m", 101.0, 100.0, 0.02);
+    const nlohmann::json j = nlohmann::json::parse(formatValidationJson({zero, plain}));
+    ASSERT_TRUE(j[0].contains("rel_error")) << j.dump();
+    EXPECT_TRUE(j[0]["rel_error"].is_null()) << j.dump();
+    EXPECT_NEAR(j[1]["rel_error"].get<double>(), 0.01, 1e-12) << j.dump();
+}
+
 TEST(ValidationTable, JudgedValueIsTheModelsElseThePapers) {
     ValidationRow r;
     r.paper = 3.0;

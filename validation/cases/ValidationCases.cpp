@@ -76,9 +76,9 @@ std::string formatValidationJson(const std::vector<ValidationRow>& rows) {
         j["multibody"] = r.multibody ? nlohmann::ordered_json(*r.multibody) : nlohmann::ordered_json();
         j["oracle"] = r.oracle;
         if (r.paper) j["paper"] = *r.paper;
-        j["rel_error"] = r.relError;
         // Where the oracle is 0 a relative error means nothing (1e+299):
-        // the absolute one says how far the value is from 0.
+        // null, and the absolute one says how far the value is from 0.
+        j["rel_error"] = r.oracle == 0 ? nlohmann::ordered_json() : nlohmann::ordered_json(r.relError);
         if (r.oracle == 0) j["abs_error"] = std::abs(judgedValue(r) - r.oracle);
         j["tolerance"] = r.tolerance;
         j["status"] = r.status;
