@@ -383,6 +383,14 @@ def _read_model(path, overrides):
             raise ModelFileNotFound(e.text, e.file, e.line, e.column, e.key, e.reason, e.included_from,
                                     missing) from None
         raise
+    except UnicodeDecodeError:
+        # The core's message holds a file name's bytes that are not UTF-8.
+        shown = _os.fsdecode(_path(path)).encode("utf-8", "backslashreplace").decode("utf-8")
+        if not _os.path.exists(path):
+            raise ModelFileNotFound("%s:1:1: error: <file>: cannot open the model file: no such file" % shown, shown,
+                                    1, 1, "<file>", "cannot open the model file: no such file", "", path) from None
+        raise ModelError("%s:1:1: error: <file>: the model's diagnostic names a file whose name is not UTF-8" % shown,
+                         shown, 1, 1, "<file>", "a file name that is not UTF-8") from None
 
 
 class Model:
