@@ -118,8 +118,10 @@ SweepPlan makeSweepPlan(const std::vector<std::string>& grids, const std::vector
     if (lhs > 0 && ranges.empty()) throw std::invalid_argument("--lhs needs at least one --range path=a:b");
     if (!grids.empty() && !ranges.empty()) throw std::invalid_argument("--range goes with --lhs, not with --grid");
     std::vector<SweepAxis> axes;
-    for (const auto& g : grids) axes.push_back(parseGrid(g));
-    for (const auto& r : ranges) axes.push_back(parseRange(r));
+    for (const auto& g : grids)
+        for (auto& axis : parseGridAxes(g)) axes.push_back(std::move(axis));
+    for (const auto& r : ranges)
+        for (auto& axis : parseRangeAxes(r)) axes.push_back(std::move(axis));
     return lhs > 0 ? makeLatinHypercube(axes, lhs, seed) : makeGrid(axes);
 }
 

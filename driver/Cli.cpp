@@ -44,6 +44,8 @@ const char* kUsage =
     "  milldyn validate [--filter TEXT] [--json] [--report DIR]\n"
     "  milldyn sweep MODEL.yaml (--grid path=a:b:n... | --lhs N --range path=a:b...) [--seed S]\n"
     "                           [--jobs N] [--shard i/N | --mpi] [--out DIR] [--set path=value]...\n"
+    "                           [--integrator NAME] [--accuracy TOL] [--end-time T] [--no-plots]\n"
+    "                           (--grid also path=a:b:n:log, path=v1,v2,..., 'p=...;q=...' tied)\n"
     "  mpirun -np N milldyn sweep ... --mpi      (each rank runs its slice; rank 0 writes the table)\n"
     "  milldyn merge DIR... --out DIR\n"
     "  milldyn elements [TYPE] [--json]   every element type: keys, units, defaults, ranges\n"
@@ -151,12 +153,18 @@ struct CommandLine {
         validate->add_option("--report", a.reportDir, "write report.html and report.md into DIR")->type_name("DIR");
         CLI::App* sweep = command("sweep", "run the model over a grid or a Latin hypercube of parameters");
         modelOptions(sweep);
-        repeatable(sweep->add_option("--grid", a.grids, "axis of a full grid (repeatable)"))->type_name("path=a:b:n");
+        repeatable(sweep->add_option("--grid", a.grids,
+                                     "axis of a full grid (repeatable): a:b:n, a:b:n:log or v1,v2,...; "
+                                     "'p=...;q=...' ties paths to one axis"))
+            ->type_name("path=a:b:n");
         repeatable(sweep->add_option("--lhs", lhs, "Latin hypercube of N points"))->type_name("N");
         repeatable(sweep->add_option("--range", a.ranges, "axis of the hypercube (repeatable)"))->type_name("path=a:b");
         repeatable(sweep->add_option("--seed", seed, "seed of the hypercube"))->type_name("S");
         repeatable(sweep->add_option("--jobs", jobs, "parallel runs (default: all cores)"))->type_name("N");
         repeatable(sweep->add_option("--shard", shard, "run slice i of N"))->type_name("i/N");
+        repeatable(sweep->add_option("--integrator", integrator, "integrator of every point (integrator.name)"))->type_name("NAME");
+        repeatable(sweep->add_option("--accuracy", accuracy, "relative accuracy of every point (integrator.accuracy)"))->type_name("TOL");
+        repeatable(sweep->add_option("--end-time", endTime, "end time of every point (scenario.end_time; seconds if no unit)"))->type_name("T");
         sweep->add_flag("--mpi", a.mpi, "one slice per MPI rank");
         sweep->add_option("--out", a.outDir, "output directory")->type_name("DIR");
         sweep->add_flag("--quiet", a.quiet, "print nothing on success");
@@ -435,6 +443,8 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
+    // A path swept twice or set and swept: refused before anything runs.
+    checkSweepPaths(plan.axes, a.overrides);
     // The model and the grid's units are checked before hundreds of points
     // report the same error.
     const bool plots = checkSweepPlan(plan, a.model, a.overrides).outputs.plots && !a.noPlots;
@@ -471,7 +481,9 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
         summary = runSweep(plan, options, progress);
     }
     if (showProgress) err << "\r" << std::string(50, ' ') << "\r";
-    addSweepPlots(plots, !plan.cartesian ? SweepLayout::Sample : a.shardCount > 1 ? SweepLayout::Infer : SweepLayout::Grid, options.outDir, summary, err);
+    const bool tied = std::any_of(plan.axes.begin(), plan.axes.end(), [](const SweepAxis& x) { return x.tiedToPrevious; });
+    addSweepPlots(plots, !plan.cartesian || tied ? SweepLayout::Sample : a.shardCount > 1 ? SweepLayout::Infer : SweepLayout::Grid,
+                  options.outDir, summary, err);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!a.quiet)
         out << "sweep of " << a.model << ": " << summary.total << " points (" << summary.run << " run, "

@@ -224,9 +224,7 @@ public:
         if (m_resolved) *m_resolved = YAML::Dump(root);
 
         spec.file = m_file;
-        checkKeys(root, "", {"format_version", "name", "description", "fidelity", "bodies", "elements",
-                             "scenario", "scenarios", "use_scenario", "integrator", "outputs", "presets", "preset",
-                             "gravity", "include" /* resolved and removed above; listed for "did you mean" */});
+        checkKeys(root, "", modelFileKeys().document);
         const YAML::Node version = required(root, "format_version", "");
         const double versionNumber = readNumber(version, "format_version", "1");
         if (!(versionNumber >= 1 && versionNumber <= 1e6) || versionNumber != std::floor(versionNumber))
@@ -558,7 +556,7 @@ private:
 
     void readFidelity(const YAML::Node& n, ModelSpec& spec) const {
         requireMap(n, "fidelity");
-        checkKeys(n, "fidelity.", {"level", "levels"});
+        checkKeys(n, "fidelity.", modelFileKeys().fidelity);
         const YAML::Node levels = required(n, "levels", "fidelity.");
         requireList(levels, "fidelity.levels");
         if (levels.size() == 0) throw error(levels, "fidelity.levels", "expected at least one level");
@@ -579,7 +577,7 @@ private:
                 const std::string name = scalar(it->first, "presets");
                 const std::string prefix = "presets." + name + ".";
                 requireMap(it->second, "presets." + name);
-                checkKeys(it->second, prefix, {"why", "set"});
+                checkKeys(it->second, prefix, modelFileKeys().preset);
                 scalar(required(it->second, "why", prefix), prefix + "why");
                 requireMap(required(it->second, "set", prefix), prefix + "set");
                 spec.presetNames.push_back(name);
@@ -690,8 +688,7 @@ private:
             b.name = scalar(required(n, "name", "bodies."), "name");
             checkName(n["name"], "name", b.name);
             const std::string prefix = b.name + ".";
-            checkKeys(n, prefix, {"name", "inertia", "mass", "mass_centre", "joint", "initial_angle", "initial_speed",
-                                  "fidelity"});
+            checkKeys(n, prefix, modelFileKeys().body);
             b.fidelity = readMemberLevels(n, prefix, spec);
             if (b.name == "ground") throw error(n["name"], "name", "'ground' is reserved for the fixed frame");
             if (spec.findBody(b.name)) throw error(n["name"], "name", "a body named '" + b.name + "' exists already");
@@ -733,7 +730,7 @@ private:
     void readJoint(const YAML::Node& n, const std::string& prefix, const ModelSpec& spec, JointSpec& j) const {
         requireMap(n, prefix + "joint");
         j.where = where(n);
-        checkKeys(n, prefix + "joint.", {"type", "parent", "location"});
+        checkKeys(n, prefix + "joint.", modelFileKeys().joint);
         const YAML::Node type = required(n, "type", prefix + "joint.");
         j.type = scalar(type, prefix + "joint.type");
         if (j.type != "pin")
@@ -777,7 +774,7 @@ private:
             if (!schema)
                 throw error(type, e.name + ".type",
                             "unknown element type '" + e.type + "'" + didYouMean(e.type, m_lookups.elementTypes));
-            readParams(n, *schema, e.name + ".", {"type", "name", "fidelity"}, spec, e);
+            readParams(n, *schema, e.name + ".", modelFileKeys().element, spec, e);
             spec.elements.push_back(e);
         }
     }
@@ -841,14 +838,14 @@ private:
                 m_readNotes.push_back(prefix + "analysis set to " + s.type + ": dropped " + joinWords(dropped) +
                                       " (not keys of " + s.type + ")");
         }
-        readParams(n, *schema, prefix, {"analysis"}, spec, s);
+        readParams(n, *schema, prefix, modelFileKeys().scenario, spec, s);
         return s;
     }
 
     void readIntegrator(const YAML::Node& n, IntegratorSpec& integ) const {
         requireMap(n, "integrator");
         integ.where = where(n);
-        checkKeys(n, "integrator.", {"name", "accuracy", "max_step"});
+        checkKeys(n, "integrator.", modelFileKeys().integrator);
         if (n["name"]) {
             integ.name = scalar(n["name"], "integrator.name");
             const auto& names = integratorNames();
@@ -872,7 +869,7 @@ private:
     void readOutputs(const YAML::Node& n, OutputSpec& out) const {
         requireMap(n, "outputs");
         out.where = where(n);
-        checkKeys(n, "outputs.", {"sample_interval", "plots", "columns", "energy_balance", "peaks"});
+        checkKeys(n, "outputs.", modelFileKeys().outputs);
         if (n["sample_interval"]) {
             out.sampleInterval = readNumber(n["sample_interval"], "outputs.sample_interval", "s");
             if (!(out.sampleInterval > 0))
@@ -1002,7 +999,7 @@ private:
         // Plain copies: a default YAML::Node is a defined null, and Node
         // assignment would write into the tree.
         const bool isMap = entry.IsMap();
-        if (isMap) checkKeys(entry, "include.", {"file", "prefix", "set"});
+        if (isMap) checkKeys(entry, "include.", modelFileKeys().include);
         const YAML::Node fileNode = isMap ? required(entry, "file", "include.") : entry;
         const bool hasPrefix = isMap && entry["prefix"], hasSet = isMap && entry["set"];
         const YAML::Node prefixNode = hasPrefix ? entry["prefix"] : YAML::Node();
@@ -1039,7 +1036,7 @@ private:
         adopt(part);
         registerNodes(part, inclusion);
         requireMap(part, "<document>");
-        checkKeys(part, "", {"format_version", "description", "include", "bodies", "elements"});
+        checkKeys(part, "", modelFileKeys().part);
         if (part["format_version"]) {
             const YAML::Node v = part["format_version"];
             if (readNumber(v, "format_version", "1") != kModelFormatVersion)
@@ -1284,6 +1281,24 @@ private:
 };
 
 }  // namespace
+
+const ModelFileKeys& modelFileKeys() {
+    static const ModelFileKeys keys{
+        // "include" is resolved and removed before the check; listed for "did you mean".
+        {"format_version", "name", "description", "fidelity", "bodies", "elements", "scenario", "scenarios",
+         "use_scenario", "integrator", "outputs", "presets", "preset", "gravity", "include"},
+        {"format_version", "description", "include", "bodies", "elements"},
+        {"name", "inertia", "mass", "mass_centre", "joint", "initial_angle", "initial_speed", "fidelity"},
+        {"type", "parent", "location"},
+        {"name", "accuracy", "max_step"},
+        {"sample_interval", "plots", "columns", "energy_balance", "peaks"},
+        {"level", "levels"},
+        {"why", "set"},
+        {"file", "prefix", "set"},
+        {"type", "name", "fidelity"},
+        {"analysis"}};
+    return keys;
+}
 
 std::string gravityWarning(const ModelSpec& spec, const ModelFileReader& reader) {
     if (spec.gravity[0] != 0 || spec.gravity[1] != 0 || spec.gravity[2] != 0) return "";

@@ -40,6 +40,18 @@ struct Override {
     bool bareNumberIsSI = false;
 };
 
+/// The keys the reader takes in each section of a model file: the lists it
+/// checks every map against, and the ones `milldyn schema` is generated
+/// from (issue 26 item 9: the schema refused the documented outputs.peaks).
+struct ModelFileKeys {
+    std::vector<std::string> document;  ///< the model document (top level)
+    std::vector<std::string> part;      ///< an included part file
+    std::vector<std::string> body, joint, integrator, outputs, fidelity, preset, include;
+    std::vector<std::string> element;   ///< an element's keys besides its type's parameters
+    std::vector<std::string> scenario;  ///< a scenario's keys besides its analysis's parameters
+};
+const ModelFileKeys& modelFileKeys();
+
 /// A model without `gravity:` whose elements are loaded by weight (their
 /// schema's needsGravity): one warning naming them, else "".
 std::string gravityWarning(const ModelSpec& spec, const ModelFileReader& reader);

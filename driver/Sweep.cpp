@@ -5,6 +5,7 @@
 #include "driver/Simulation.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/AtomicFile.h"
+#include "driver/outputs/OutputSet.h"
 #include "driver/outputs/Writers.h"
 #include "plugins/scene/ElementRegistry.h"
 
@@ -160,13 +161,6 @@ Json readPoint(const std::string& path) {
     }
 }
 
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string out = "\"";
-    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-    return out + "\"";
-}
-
 /// The table from point files, in point order.
 std::string formatTable(const std::vector<Json>& points) {
     std::vector<std::pair<std::string, std::string>> inputs;  // path, unit
@@ -177,15 +171,17 @@ std::string formatTable(const std::vector<Json>& points) {
         for (auto it = p["results"].begin(); it != p["results"].end(); ++it)
             results.emplace(it.key(), it.value()["unit"].get<std::string>());
     }
+    // Every text field per RFC 4180 (csvField): a path or result name with
+    // a comma or line break stays one field.
     std::string out = "index[1]";
-    for (const auto& in : inputs) out += "," + in.first + "[" + (in.second.empty() ? "SI" : in.second) + "]";
+    for (const auto& in : inputs) out += "," + csvField(in.first + "[" + (in.second.empty() ? "SI" : in.second) + "]");
     out += ",status";
-    for (const auto& r : results) out += "," + r.first + "[" + r.second + "]";
+    for (const auto& r : results) out += "," + csvField(r.first + "[" + r.second + "]");
     out += ",diagnostic\n";
     for (const auto& p : points) {
         out += std::to_string(p["index"].get<std::size_t>());
         for (const auto& in : p["inputs"]) out += "," + formatDouble(in["value"].get<double>());
-        out += "," + p["status"].get<std::string>();
+        out += "," + csvField(p["status"].get<std::string>());
         for (const auto& r : results) {
             out += ",";
             if (p["results"].contains(r.first)) out += formatDouble(p["results"][r.first]["value"].get<double>());
@@ -213,20 +209,30 @@ SweepSummary writeTable(const std::string& outDir, std::vector<Json> points, Swe
 /// itself, analysis, integrator and scenario included; the plan's kind,
 /// axes and values) and the manifest DIR/sweep-plan.json that records it.
 Json sweepManifest(const SweepPlan& plan, const SweepOptions& options) {
+    // Plots are no part of what a sweep computes (isPresentationPath): the
+    // document is taken with outputs.plots set one way, whatever the file
+    // or --set say, and such --set are left out of the list.
+    std::vector<Override> identity;
+    for (const auto& o : options.baseOverrides)
+        if (!isPresentationPath(o.path)) identity.push_back(o);
+    std::vector<Override> forDigest = identity;
+    forDigest.push_back({"outputs.plots", "true"});
     std::string resolved;
-    readModelFile(options.model, defaultModelReader(), options.baseOverrides, &resolved);
+    readModelFile(options.model, defaultModelReader(), forDigest, &resolved);
     Json overrides = Json::array();
-    for (const auto& o : options.baseOverrides) overrides.push_back(o.path + "=" + o.value);
+    for (const auto& o : identity) overrides.push_back(o.path + "=" + o.value);
     Json axes = Json::array();
     for (const auto& a : plan.axes) {
         std::string values;
         for (double v : a.values) values += formatDouble(v) + "\n";
-        axes.push_back({{"path", a.path},
-                        {"unit", a.unit},
-                        {"count", a.values.size()},
-                        {"first", a.values.empty() ? 0.0 : a.values.front()},
-                        {"last", a.values.empty() ? 0.0 : a.values.back()},
-                        {"values_digest", digestOf(values)}});
+        Json axis = {{"path", a.path},
+                     {"unit", a.unit},
+                     {"count", a.values.size()},
+                     {"first", a.values.empty() ? 0.0 : a.values.front()},
+                     {"last", a.values.empty() ? 0.0 : a.values.back()},
+                     {"values_digest", digestOf(values)}};
+        if (a.tiedToPrevious) axis["tied_to_previous"] = true;  // absent otherwise: older digests stay
+        axes.push_back(axis);
     }
     Json m;
     m["kind"] = plan.cartesian ? "grid" : "lhs";
@@ -282,11 +288,60 @@ void claimDirectory(const std::string& dir, const Json& manifest) {
 
 }  // namespace
 
+namespace {
+
+/// The dimension (group of tied axes) of each axis, and each group's size.
+std::vector<std::size_t> groupsOf(const std::vector<SweepAxis>& axes) {
+    std::vector<std::size_t> group;
+    for (std::size_t a = 0; a < axes.size(); ++a)
+        group.push_back(a == 0 ? 0 : group.back() + (axes[a].tiedToPrevious ? 0 : 1));
+    return group;
+}
+
+/// The two ends of a range "a:b" with one unit: a bare 0 takes the other
+/// end's unit; any other bare number beside a unit is refused (issue 26
+/// item 7: `25 %:0.45` swept to 0.45 %).
+std::string commonUnit(const std::string& option, const std::string& text,
+                       const std::vector<std::pair<double, std::string>>& values) {
+    std::string unit;
+    for (const auto& v : values)
+        if (!v.second.empty()) unit = v.second;
+    for (const auto& v : values) {
+        if (v.second == unit || (v.second.empty() && v.first == 0)) continue;
+        std::string written;
+        for (const auto& w : values)
+            written += (written.empty() ? "'" : ", '") + formatSignificant(w.first) + (w.second.empty() ? "" : " " + w.second) + "'";
+        throw optionError(option, text,
+                          v.second.empty() || unit.empty()
+                              ? "every value needs the same unit (" + written + "): write the unit on each"
+                              : "every value must be in the same unit (" + written + ")");
+    }
+    return unit;
+}
+
+/// Splits "spec;spec;..." (tied paths) into its parts.
+std::vector<std::string> tiedParts(const std::string& text) {
+    std::vector<std::string> parts;
+    std::stringstream ss(text);
+    for (std::string p; std::getline(ss, p, ';');) {
+        p.erase(0, p.find_first_not_of(' '));
+        p.erase(p.find_last_not_of(' ') + 1);
+        parts.push_back(p);
+    }
+    if (!text.empty() && text.back() == ';') parts.push_back("");
+    return parts;
+}
+
+}  // namespace
+
 std::size_t SweepPlan::valueIndex(std::size_t point, std::size_t axis) const {
     if (!cartesian) return point;
-    // Row-major: the last axis varies fastest.
+    // Row-major over the dimensions: the last one varies fastest; tied
+    // axes share their dimension's index.
+    const auto group = groupsOf(axes);
     std::size_t stride = 1;
-    for (std::size_t a = axes.size(); a-- > axis + 1;) stride *= axes[a].values.size();
+    for (std::size_t a = axes.size(); a-- > 0;)
+        if (group[a] > group[axis] && (a + 1 == axes.size() || group[a + 1] != group[a])) stride *= axes[a].values.size();
     return (point / stride) % axes[axis].values.size();
 }
 
@@ -298,45 +353,91 @@ std::vector<Override> SweepPlan::overrides(std::size_t point) const {
     return out;
 }
 
-/// Both ends in one unit, or both bare (SI): a bare number at one end was
-/// read in the other end's unit (`25 %:0.45` swept to 0.45 %), which the
-/// user may have meant as SI (45 %): refused, not guessed (issue 26 item 7).
-static void checkEndUnits(const std::string& option, const std::string& text, const std::string& endA,
-                   const std::string& unitA, const std::string& endB, const std::string& unitB) {
-    if (unitA.empty() != unitB.empty())
-        throw optionError(option, text,
-                          "give the unit on both ends or on neither: '" + (unitA.empty() ? endA : endB) +
-                              "' is a bare number (SI) and '" + (unitA.empty() ? endB : endA) + "' is in '" +
-                              (unitA.empty() ? unitB : unitA) + "'");
-    if (unitB != unitA)
-        throw optionError(option, text, "both ends must be in the same unit ('" + unitA + "' and '" + unitB + "')");
-}
-
 SweepAxis parseGrid(const std::string& text) {
+    if (text.find(';') != std::string::npos)
+        throw optionError("--grid", text, "one path here (paths tied with ';' go through parseGridAxes)");
     const auto [path, parts] = splitSpec("--grid", text);
-    if (parts.size() != 3) throw optionError("--grid", text, "expected path=a:b:n");
-    const auto [a, unitA] = splitValue("--grid", text, parts[0]);
-    const auto [b, unitB] = splitValue("--grid", text, parts[1]);
-    checkEndUnits("--grid", text, parts[0], unitA, parts[1], unitB);
+    const std::string listed = text.substr(text.find('=') + 1);
+    // A value list: "v1,v2,...".
+    if (parts.size() == 1 && listed.find(',') != std::string::npos) {
+        std::vector<std::pair<double, std::string>> values;
+        std::stringstream ss(listed);
+        for (std::string v; std::getline(ss, v, ',');) {
+            v.erase(0, v.find_first_not_of(' '));
+            values.push_back(splitValue("--grid", text, v));
+        }
+        if (values.size() > 100000) throw optionError("--grid", text, "at most 100000 values");
+        SweepAxis axis{path, commonUnit("--grid", text, values), {}, false};
+        for (const auto& v : values) axis.values.push_back(v.first);
+        return axis;
+    }
+    if (parts.size() != 3 && !(parts.size() == 4 && (parts[3] == "log" || parts[3] == "lin")))
+        throw optionError("--grid", text, "expected path=a:b:n, path=a:b:n:log or path=v1,v2,...");
+    const auto a = splitValue("--grid", text, parts[0]);
+    const auto b = splitValue("--grid", text, parts[1]);
+    const std::string unit = commonUnit("--grid", text, {a, b});
     char* end = nullptr;
     const long n = std::strtol(parts[2].c_str(), &end, 10);
-    if (*end != '\0' || n < 1 || n > 100000) throw optionError("--grid", text, "n must be a whole number 1..100000");
-    SweepAxis axis{path, unitA, {}, false};
+    if (parts[2].empty() || *end != '\0' || n < 1 || n > 100000)
+        throw optionError("--grid", text, "n must be a whole number 1..100000");
+    const bool log = parts.size() == 4 && parts[3] == "log";
+    if (log && !(a.first * b.first > 0))
+        throw optionError("--grid", text, "a log-spaced axis needs both ends of one sign and not 0");
+    SweepAxis axis{path, unit, {}, false};
     // 12 significant digits: 0.1:0.5:3 gives 0.3, not 0.30000000000000004.
     for (long i = 0; i < n; ++i) {
-        const double v = n == 1 ? a : a + (b - a) * double(i) / double(n - 1);
+        const double f = n == 1 ? 0.0 : double(i) / double(n - 1);
+        const double v = log ? a.first * std::pow(b.first / a.first, f) : a.first + (b.first - a.first) * f;
         axis.values.push_back(std::stod(formatSignificant(v)));
     }
     return axis;
 }
 
+std::vector<SweepAxis> parseGridAxes(const std::string& text) {
+    std::vector<SweepAxis> axes;
+    for (const auto& part : tiedParts(text)) {
+        axes.push_back(parseGrid(part));
+        axes.back().tiedToPrevious = axes.size() > 1;
+        if (axes.back().values.size() != axes.front().values.size())
+            throw optionError("--grid", text,
+                              "tied paths need the same number of values (" + axes.front().path + ": " +
+                                  std::to_string(axes.front().values.size()) + ", " + axes.back().path + ": " +
+                                  std::to_string(axes.back().values.size()) + ")");
+    }
+    return axes;
+}
+
 SweepAxis parseRange(const std::string& text) {
     const auto [path, parts] = splitSpec("--range", text);
     if (parts.size() != 2) throw optionError("--range", text, "expected path=a:b");
-    const auto [a, unitA] = splitValue("--range", text, parts[0]);
-    const auto [b, unitB] = splitValue("--range", text, parts[1]);
-    checkEndUnits("--range", text, parts[0], unitA, parts[1], unitB);
-    return {path, unitA, {a, b}, false};
+    const auto a = splitValue("--range", text, parts[0]);
+    const auto b = splitValue("--range", text, parts[1]);
+    return {path, commonUnit("--range", text, {a, b}), {a.first, b.first}, false};
+}
+
+std::vector<SweepAxis> parseRangeAxes(const std::string& text) {
+    std::vector<SweepAxis> axes;
+    for (const auto& part : tiedParts(text)) {
+        axes.push_back(parseRange(part));
+        axes.back().tiedToPrevious = axes.size() > 1;
+    }
+    return axes;
+}
+
+bool isPresentationPath(const std::string& path) { return path == "outputs.plots"; }
+
+void checkSweepPaths(const std::vector<SweepAxis>& axes, const std::vector<Override>& base) {
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        for (std::size_t b = 0; b < a; ++b)
+            if (axes[b].path == axes[a].path)
+                throw optionError("--grid", axes[a].path,
+                                  axes[a].path + " is swept twice: the first axis would never be used (one axis per path)");
+        for (const auto& o : base)
+            if (o.path == axes[a].path)
+                throw optionError("--set", o.path + "=" + o.value,
+                                  o.path + " is set and swept: the sweep would override the set value at every "
+                                           "point (leave out the --set or the axis)");
+    }
 }
 
 SweepPlan makeGrid(std::vector<SweepAxis> axes) {
@@ -348,6 +449,7 @@ SweepPlan makeGrid(std::vector<SweepAxis> axes) {
     double points = 1;
     std::string sizes;
     for (const auto& a : axes) {
+        if (a.tiedToPrevious) continue;
         points *= double(a.values.size());
         sizes += (sizes.empty() ? "" : " x ") + std::to_string(a.values.size());
     }
@@ -355,7 +457,13 @@ SweepPlan makeGrid(std::vector<SweepAxis> axes) {
         throw optionError("--grid", sizes, "the grid has " + formatSignificant(points) + " points (" + sizes +
                                                "), more than the " + std::to_string(kMaxSweepPoints) +
                                                " a sweep may have: use fewer values or --lhs");
-    for (const auto& a : axes) plan.count *= a.values.size();
+    checkSweepPaths(axes);
+    for (std::size_t a = 0; a < axes.size(); ++a) {
+        if (axes[a].values.empty()) throw optionError("--grid", axes[a].path, "an axis needs at least one value");
+        if (a > 0 && axes[a].tiedToPrevious && axes[a].values.size() != axes[a - 1].values.size())
+            throw optionError("--grid", axes[a].path, "tied paths need the same number of values");
+        if (!axes[a].tiedToPrevious) plan.count *= axes[a].values.size();
+    }
     plan.axes = std::move(axes);
     return plan;
 }
@@ -368,13 +476,20 @@ SweepPlan makeLatinHypercube(std::vector<SweepAxis> ranges, std::size_t n, unsig
     SweepPlan plan;
     plan.cartesian = false;
     plan.count = n;
+    checkSweepPaths(ranges);
+    // One draw per dimension; tied ranges take the same fractions.
+    std::vector<double> fractions;
     for (auto& r : ranges) {
         const double lo = r.values[0], hi = r.values[1];
-        std::vector<std::size_t> strata(n);
-        std::iota(strata.begin(), strata.end(), 0);
-        for (std::size_t i = n; i > 1; --i) std::swap(strata[i - 1], strata[rng() % i]);  // Fisher-Yates
+        if (!r.tiedToPrevious) {
+            std::vector<std::size_t> strata(n);
+            std::iota(strata.begin(), strata.end(), 0);
+            for (std::size_t i = n; i > 1; --i) std::swap(strata[i - 1], strata[rng() % i]);  // Fisher-Yates
+            fractions.clear();
+            for (std::size_t i = 0; i < n; ++i) fractions.push_back((double(strata[i]) + uniform()) / double(n));
+        }
         r.values.clear();
-        for (std::size_t i = 0; i < n; ++i) r.values.push_back(lo + (hi - lo) * (double(strata[i]) + uniform()) / double(n));
+        for (std::size_t i = 0; i < n; ++i) r.values.push_back(lo + (hi - lo) * fractions[i]);
     }
     plan.axes = std::move(ranges);
     return plan;
@@ -383,10 +498,15 @@ SweepPlan makeLatinHypercube(std::vector<SweepAxis> ranges, std::size_t n, unsig
 SweepPart runSweepPart(const SweepPlan& plan, const SweepOptions& options,
                        const std::function<void(std::size_t, std::size_t, std::size_t)>& progress) {
     ElementRegistry::instance();  // built once, before the workers read it
+    checkSweepPaths(plan.axes, options.baseOverrides);
     const Json manifest = sweepManifest(plan, options);
     const Json tag = sweepTag(manifest);
     ensureDirectory(options.outDir + "/points");
     claimDirectory(options.outDir, manifest);
+    // Temporaries of a sweep killed by SIGKILL (its point files being
+    // written): removed once their process is gone.
+    removeStaleStaging(options.outDir);
+    removeStaleStaging(options.outDir + "/points");
 
     std::vector<std::size_t> mine;
     for (std::size_t i = 0; i < plan.count; ++i)

@@ -27,6 +27,10 @@ struct SweepAxis {
     /// No unit given and the values are SI (the Python module's numbers);
     /// on the command line a dimensional axis needs its unit.
     bool bareNumberIsSI = false;
+    /// Moves with the axis before it (paths tied with ';' in one --grid or
+    /// --range): both take their value index together, one dimension of
+    /// the sweep (two flywheels; a motor's synchronous and rated speed).
+    bool tiedToPrevious = false;
 };
 
 /// The most points one sweep may have (grid or --lhs).
@@ -38,17 +42,30 @@ struct SweepPlan {
     std::size_t count = 0;
     bool cartesian = true;  ///< grid (product of axes) or LHS (axes side by side)
 
-    /// Index into axes[a].values of point i.
+    /// Index into axes[a].values of point i (tied axes share it).
     std::size_t valueIndex(std::size_t point, std::size_t axis) const;
     /// The --set overrides of point i.
     std::vector<Override> overrides(std::size_t point) const;
 };
 
 /// "path=a:b:n" → an axis of n evenly spaced values from a to b (units
-/// allowed, the same on both ends). Throws SpecError located at the option.
+/// allowed, the same on both ends; a bare 0 takes the other end's unit);
+/// "path=a:b:n:log" → n values spaced evenly in log (a, b of one sign,
+/// not 0); "path=v1,v2,..." → the values as listed (one unit for all).
+/// Throws SpecError located at the option.
 SweepAxis parseGrid(const std::string& text);
+/// One --grid option: one axis, or several "path=spec;path=spec" tied to
+/// one dimension (each after the first tiedToPrevious; equal counts).
+std::vector<SweepAxis> parseGridAxes(const std::string& text);
 /// "path=a:b" → a range for a Latin hypercube.
 SweepAxis parseRange(const std::string& text);
+/// One --range option: "path=a:b;path=c:d" ties ranges to one dimension
+/// of the hypercube (the same stratum and position in each).
+std::vector<SweepAxis> parseRangeAxes(const std::string& text);
+/// Refuses a path swept twice (the first axis would never be used) and a
+/// base override (--set, --end-time, ...) of a swept path (the sweep would
+/// silently override it). Throws SpecError naming both.
+void checkSweepPaths(const std::vector<SweepAxis>& axes, const std::vector<Override>& base = {});
 /// n points of a Latin hypercube over the ranges (deterministic for a seed).
 SweepPlan makeLatinHypercube(std::vector<SweepAxis> ranges, std::size_t n, unsigned long seed);
 SweepPlan makeGrid(std::vector<SweepAxis> axes);
@@ -67,6 +84,11 @@ struct SweepOptions {
     /// table is not written.
     CancelFlag* cancel = nullptr;
 };
+
+/// The override paths that are no part of a sweep's identity (its digest):
+/// outputs.plots (a sweep's points draw nothing; `--no-plots` and
+/// `--set outputs.plots=false` both only skip the sweep_*.png).
+bool isPresentationPath(const std::string& path);
 
 struct SweepSummary {
     std::size_t run = 0, resumed = 0, failed = 0, total = 0;

@@ -9,6 +9,7 @@
 #include "driver/Api.h"
 #include "driver/PluginLoader.h"
 #include "driver/Simulation.h"
+#include "driver/Sweep.h"
 #include "driver/Units.h"
 #include "driver/outputs/AtomicFile.h"
 #include "plugins/scene/ElementRegistry.h"
@@ -304,7 +305,8 @@ PYBIND11_MODULE(_milldyn, m) {
 
     m.def("sweep", [](const std::string& model, const OverrideTriples& overrides,
                       const std::vector<std::string>& grids, const std::vector<std::string>& ranges, std::size_t lhs,
-                      unsigned long seed, unsigned jobs, const std::string& outDir) {
+                      unsigned long seed, unsigned jobs, const std::string& outDir, py::object progress,
+                      Token* token) {
         SweepSummary s;
         SweepOptions options;
         {
@@ -319,24 +321,45 @@ PYBIND11_MODULE(_milldyn, m) {
         // Python's numbers are SI (docs/python.md): an axis given without a
         // unit is read so at every point, as `Model.set` reads a number.
         for (auto& axis : plan.axes) axis.bareNumberIsSI = axis.unit.empty();
+        checkSweepPaths(plan.axes, options.baseOverrides);  // as the CLI: refused before anything runs
         // The sweep runs on a thread of its own while this one, holding the
-        // GIL every 50 ms only, lets Python see Ctrl-C: a signal stops the
-        // running points at their next sample, no further point starts, and
-        // the KeyboardInterrupt is raised once the sweep has stopped (its
-        // finished points kept, as the CLI's SIGINT leaves them).
+        // GIL every 50 ms only, lets Python see Ctrl-C, calls `progress` and
+        // watches the CancelToken: a signal, a token set or progress
+        // returning False stops the running points at their next sample, no
+        // further point starts, and the KeyboardInterrupt (or Cancelled) is
+        // raised once the sweep has stopped (its finished points kept, as
+        // the CLI's SIGINT leaves them).
         CancelFlag cancel;
         options.cancel = &cancel;
+        std::atomic<std::size_t> done{0}, total{0}, failed{0};
+        std::atomic<bool> reported{true};
         std::exception_ptr failure;
         std::atomic<bool> finished{false};
         std::thread worker([&] {
             try {
-                s = runSweep(plan, options);
+                s = runSweep(plan, options, [&](std::size_t d, std::size_t t, std::size_t f) {
+                    done = d;
+                    total = t;
+                    failed = f;
+                    reported = false;
+                });
             } catch (...) {
                 failure = std::current_exception();
             }
             finished = true;
         });
         bool interrupted = false;
+        std::exception_ptr callbackError;
+        auto report = [&] {
+            if (progress.is_none() || reported.exchange(true) || callbackError || cancel.cancelled) return;
+            try {
+                const py::object answer = progress(done.load(), total.load(), failed.load());
+                if (!answer.is_none() && PyObject_IsTrue(answer.ptr()) == 0) cancel.cancelled = true;
+            } catch (py::error_already_set&) {
+                callbackError = std::current_exception();  // raised once the sweep has stopped
+                cancel.cancelled = true;
+            }
+        };
         while (!finished) {
             {
                 py::gil_scoped_release release;
@@ -346,21 +369,27 @@ PYBIND11_MODULE(_milldyn, m) {
                 interrupted = true;  // the Python error (KeyboardInterrupt) stays set until we return
                 cancel.cancelled = true;
             }
+            if (token && token->flag->cancelled) cancel.cancelled = true;
+            if (!interrupted) report();
         }
         {
             py::gil_scoped_release release;
             worker.join();
         }
         if (interrupted) throw py::error_already_set();
+        if (callbackError) std::rethrow_exception(callbackError);
+        if (!failure) report();  // the last point's progress
         if (failure) std::rethrow_exception(failure);
         py::dict d;
         d["run"] = s.run;
         d["resumed"] = s.resumed;
         d["failed"] = s.failed;
+        d["errors"] = s.errors;
         d["total"] = s.total;
         d["files"] = s.files;
         return d;
-    });
+    }, py::arg("model"), py::arg("overrides"), py::arg("grids"), py::arg("ranges"), py::arg("lhs"), py::arg("seed"),
+       py::arg("jobs"), py::arg("out"), py::arg("progress") = py::none(), py::arg("token") = nullptr);
 
     m.def("validate", [](const std::string& filter) {
         std::vector<ValidationRow> rows;
@@ -400,7 +429,15 @@ PYBIND11_MODULE(_milldyn, m) {
         return out;
     });
     m.def("load_plugin", [](const std::string& path) { loadPlugin(path); });
-    m.def("to_si", [](const std::string& text, const std::string& unit) { return units::toSI(text, unit); });
+    m.def("to_si", [](const std::string& text, const std::string& unit) {
+        try {
+            return units::toSI(text, unit);
+        } catch (const std::invalid_argument& e) {
+            // A unit that is not a coherent SI unit: the user's text here,
+            // so the documented UnitError (issue 26 item 10), not ValueError.
+            throw units::UnitError(e.what(), 0);
+        }
+    });
     m.def("parse_quantity", [](const std::string& text) {
         const units::Quantity q = units::parseQuantity(text);
         return py::make_tuple(q.value, q.dim.toString());

@@ -19,7 +19,8 @@ trap 'rm -rf "$OUT"' EXIT
 "$BIN" sweep "$MODEL" --grid "elements.belt1.fixed_sheave_radius=0.02 m:0.16 m:15" --jobs 1 --out "$OUT/c" >/dev/null
 
 # Column numbers by name (gnuplot reads CSV by position).
-col() { head -1 "$1" | tr ',' '\n' | grep -n -x -F "$2" | cut -d: -f1; }
+# The column of header "$2" in CSV "$1" (RFC 4180: a quoted name may hold commas).
+col() { python3 -c 'import csv, sys; h = next(csv.reader(open(sys.argv[1], newline=""))); print(h.index(sys.argv[2]) + 1 if sys.argv[2] in h else "")' "$1" "$2"; }
 T=$OUT/turn/kinetostatics.csv
 RA=$(col "$T" "reaction_A1.on_drum1_at_axis_magnitude[N]")
 TT=$(col "$T" "belt1.tension_tight[N]"); TS=$(col "$T" "belt1.tension_slack[N]")

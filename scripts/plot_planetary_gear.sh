@@ -27,7 +27,8 @@ for size in 100x200 500x1000; do
   "$BIN" run "$M" --scenario turn --out "$OUT/turnrigid_$size" --quiet
 done
 
-col() { head -1 "$1" | tr ',' '\n' | grep -n -x -F "$2" | cut -d: -f1; }
+# The column of header "$2" in CSV "$1" (RFC 4180: a quoted name may hold commas).
+col() { python3 -c 'import csv, sys; h = next(csv.reader(open(sys.argv[1], newline=""))); print(h.index(sys.argv[2]) + 1 if sys.argv[2] in h else "")' "$1" "$2"; }
 TP=$(col "$OUT/tp_100x200/sweep.csv" "elements.drive.acceleration_time[s]")
 MT=$(col "$OUT/tp_100x200/sweep.csv" "drive.torque.first[N*m]")
 MINF_S=$(tail -1 "$OUT/tpinf_100x200/sweep.csv" | cut -d, -f"$MT")

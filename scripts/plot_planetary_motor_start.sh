@@ -16,7 +16,8 @@ trap 'rm -rf "$OUT"' EXIT
 "$BIN" run "$MODEL" --set outputs.plots=false --out "$OUT/slip" --quiet
 "$BIN" run "$MODEL" --set outputs.plots=false --set "elements.belt.pretension=40 kN" --out "$OUT/grip" --quiet
 
-col() { head -1 "$1" | tr ',' '\n' | grep -n -x -F "$2" | cut -d: -f1; }
+# The column of header "$2" in CSV "$1" (RFC 4180: a quoted name may hold commas).
+col() { python3 -c 'import csv, sys; h = next(csv.reader(open(sys.argv[1], newline=""))); print(h.index(sys.argv[2]) + 1 if sys.argv[2] in h else "")' "$1" "$2"; }
 S=$OUT/slip/timeseries.csv
 G=$OUT/grip/timeseries.csv
 WC=$(col "$S" "carrier.speed[rad/s]"); WM=$(col "$S" "motor_shaft.speed[rad/s]")

@@ -111,13 +111,14 @@ void forgetTemporary(const std::string& path) {
     }
 }
 
-bool runTool(const std::vector<std::string>& argv) {
+bool runTool(const std::vector<std::string>& argv, const std::string& cwd) {
     std::vector<char*> args;
     for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
     pid_t pid = 0;
     const int rc = ::posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
@@ -146,9 +147,51 @@ bool isCompletePng(const std::string& path) {
     return in && std::memcmp(head, kSignature, 8) == 0 && std::memcmp(tail, kEnd, 12) == 0;
 }
 
+namespace {
+
+/// The process id in "PID.N" at the end of `rest` (all digits, a dot, all
+/// digits), or 0.
+pid_t pidOf(const std::string& rest) {
+    const auto dot = rest.find('.');
+    auto digits = [](const std::string& t) {
+        return !t.empty() && t.size() <= 9 && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
+    };
+    if (dot == std::string::npos || !digits(rest.substr(0, dot)) || !digits(rest.substr(dot + 1))) return 0;
+    return static_cast<pid_t>(std::stol(rest.substr(0, dot)));
+}
+
+/// No process of that id exists (kill(pid, 0): ESRCH; EPERM means one of
+/// another user runs, whose files may be in use).
+bool deadProcess(pid_t pid) { return pid > 0 && pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH; }
+
+}  // namespace
+
+std::vector<std::string> removeStaleStaging(const std::string& dir) {
+    std::vector<std::string> removed;
+    std::error_code ec;
+    const std::string staging = ".milldyn-staging.", temporary = ".tmp.";
+    for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        pid_t pid = 0;
+        if (name.compare(0, staging.size(), staging) == 0) {
+            pid = pidOf(name.substr(staging.size()));  // .milldyn-staging.PID.N
+        } else {
+            // NAME.tmp.PID.N: a ".tmp." followed by PID.N and nothing else.
+            for (auto k = name.find(temporary); k != std::string::npos && !pid; k = name.find(temporary, k + 1))
+                pid = pidOf(name.substr(k + temporary.size()));
+        }
+        if (!deadProcess(pid)) continue;
+        std::error_code rm;
+        std::filesystem::remove_all(it->path(), rm);
+        if (!rm) removed.push_back(name);
+    }
+    return removed;
+}
+
 OutputSet::OutputSet(std::string dir) : m_dir(std::move(dir)) {
     installSignalCleanup();
     ensureDirectory(m_dir);
+    removeStaleStaging(m_dir);  // what a SIGKILLed run left (issue 26 item 8)
     static std::atomic<unsigned> counter{0};
     m_staging = m_dir + "/.milldyn-staging." + std::to_string(::getpid()) + "." + std::to_string(counter++);
     std::error_code ec;

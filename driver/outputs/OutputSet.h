@@ -23,9 +23,16 @@ void registerTemporary(const std::string& path);
 void forgetTemporary(const std::string& path);
 
 /// Runs a helper program (gnuplot, rsvg-convert) without a shell, its
-/// standard error discarded; true if it exited 0. SIGINT/SIGTERM reach this
-/// process while it runs (std::system would ignore SIGINT).
-bool runTool(const std::vector<std::string>& argv);
+/// standard error discarded, in the working directory `cwd` (empty: this
+/// process's); true if it exited 0. SIGINT/SIGTERM reach this process while
+/// it runs (std::system would ignore SIGINT).
+bool runTool(const std::vector<std::string>& argv, const std::string& cwd = "");
+
+/// Removes the staging directories `.milldyn-staging.PID.N` and temporary
+/// files `NAME.tmp.PID.N` in `dir` whose process PID no longer runs
+/// (SIGKILL leaves them: no handler runs), and returns their names. A live
+/// process's are left alone.
+std::vector<std::string> removeStaleStaging(const std::string& dir);
 
 /// True if `path` holds a whole PNG: the signature and the closing IEND
 /// chunk (a tool that exits 0 on a full disk leaves a truncated file).
@@ -33,8 +40,9 @@ bool isCompletePng(const std::string& path);
 
 class OutputSet {
 public:
-    /// Creates DIR (if needed) and a fresh staging directory inside it.
-    /// Throws OutputError.
+    /// Creates DIR (if needed) and a fresh staging directory inside it;
+    /// first removes the staging directories of dead processes there
+    /// (removeStaleStaging). Throws OutputError.
     explicit OutputSet(std::string dir);
     /// Removes the staging directory and whatever is in it, unless committed.
     ~OutputSet();

@@ -1,10 +1,12 @@
 #include "driver/outputs/SweepPlots.h"
 
+#include "driver/outputs/AtomicFile.h"
 #include "driver/outputs/Writers.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <numeric>
@@ -14,32 +16,6 @@
 
 namespace milldyn {
 namespace {
-
-/// One CSV record; fields may be quoted ("" is a quote inside).
-std::vector<std::string> splitCsvLine(const std::string& line) {
-    std::vector<std::string> out(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const char c = line[i];
-        if (quoted) {
-            if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-                out.back() += '"';
-                ++i;
-            } else if (c == '"') {
-                quoted = false;
-            } else {
-                out.back() += c;
-            }
-        } else if (c == '"') {
-            quoted = true;
-        } else if (c == ',') {
-            out.emplace_back();
-        } else {
-            out.back() += c;
-        }
-    }
-    return out;
-}
 
 /// "path[unit]" → (path, unit).
 std::pair<std::string, std::string> splitHeader(const std::string& h) {
@@ -75,10 +51,11 @@ void dataBlock(std::ostringstream& s, const std::string& name, const std::vector
 }  // namespace
 
 SweepTable parseSweepTable(const std::string& csv) {
-    std::istringstream in(csv);
-    std::string line;
-    if (!std::getline(in, line)) throw std::invalid_argument("sweep.csv is empty");
-    const auto header = splitCsvLine(line);
+    // RFC 4180 as written (csvField): a quoted name may hold commas and
+    // line breaks, so records, not lines.
+    const auto records = parseCsv(csv);
+    if (records.empty()) throw std::invalid_argument("sweep.csv is empty");
+    const auto& header = records.front();
     const auto status = std::find(header.begin(), header.end(), "status");
     if (header.empty() || header.front() != "index[1]" || status == header.end() || header.back() != "diagnostic")
         throw std::invalid_argument("sweep.csv: header is not index[1],inputs...,status,results...,diagnostic");
@@ -95,9 +72,9 @@ SweepTable parseSweepTable(const std::string& csv) {
             t.resultUnits.push_back(nu.second);
         }
     }
-    while (std::getline(in, line)) {
-        if (line.empty()) continue;
-        const auto f = splitCsvLine(line);
+    for (std::size_t k = 1; k < records.size(); ++k) {
+        const auto& f = records[k];
+        if (f.size() == 1 && f[0].empty()) continue;
         if (f.size() != header.size())
             throw std::invalid_argument("sweep.csv: a row has " + std::to_string(f.size()) + " fields, the header " +
                                         std::to_string(header.size()));
@@ -168,7 +145,7 @@ std::vector<std::string> writeSweepPlots(const std::string& dir, SweepLayout lay
     if (layout == SweepLayout::Infer) layout = inferSweepLayout(t);
     const std::size_t axes = t.inputNames.size();
     const bool lines = layout == SweepLayout::Grid && axes <= 2;
-    std::vector<std::string> skipped;
+    std::vector<std::string> skipped, missing;
     for (std::size_t r = 0; r < t.resultNames.size(); ++r) {
         const bool any = std::any_of(t.results.begin(), t.results.end(),
                                      [&](const std::vector<double>& row) { return std::isfinite(row[r]); });
@@ -227,10 +204,19 @@ std::vector<std::string> writeSweepPlots(const std::string& dir, SweepLayout lay
         }
         const std::string png = dir + "/sweep_" + plotFileStem(t.resultNames[r]) + ".png";
         if (!renderGnuplotPng(png, s.str(), 1000, height)) {
-            warning = "gnuplot failed for sweep plot " + t.resultNames[r];
+            missing.push_back(std::filesystem::path(png).filename().string());
             continue;
         }
         written.push_back(png);
+    }
+    // An asked-for plot not drawn (a full disk) is a failed output, every
+    // one of them named; the table and the points stay (issue 26 item 8).
+    if (!missing.empty()) {
+        std::string list;
+        for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
+        throw OutputError(std::to_string(missing.size()) + " of " + std::to_string(missing.size() + written.size()) +
+                          " sweep plots not drawn (gnuplot failed or left an incomplete PNG: a full disk?): " + list +
+                          "; sweep.csv and points/ are complete (--no-plots skips the plots)");
     }
     if (!skipped.empty() && warning.empty()) {
         warning = "no sweep plot of";

@@ -11,7 +11,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
+#include <stdexcept>
 
 namespace milldyn {
 
@@ -21,10 +23,75 @@ std::string formatDouble(double v) {
     return std::string(buf, r.ptr);
 }
 
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+    std::vector<std::vector<std::string>> records;
+    std::vector<std::string> record;
+    std::string field;
+    bool quoted = false, wasQuoted = false, any = false;
+    auto endField = [&] {
+        record.push_back(field);
+        field.clear();
+        wasQuoted = false;
+    };
+    auto endRecord = [&] {
+        endField();
+        records.push_back(record);
+        record.clear();
+        any = false;
+    };
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (quoted) {
+            if (c != '"') {
+                field += c;
+            } else if (i + 1 < text.size() && text[i + 1] == '"') {
+                field += '"';
+                ++i;
+            } else {
+                quoted = false;
+                wasQuoted = true;
+            }
+            continue;
+        }
+        if (c == ',') {
+            endField();
+            any = true;
+        } else if (c == '\n' || (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n')) {
+            if (c == '\r') ++i;
+            endRecord();
+        } else if (c == '"' && field.empty() && !wasQuoted) {
+            quoted = true;
+            any = true;
+        } else if (wasQuoted) {
+            throw std::invalid_argument("CSV: text after a closing quote in record " + std::to_string(records.size() + 1));
+        } else {
+            field += c;
+            any = true;
+        }
+    }
+    if (quoted) throw std::invalid_argument("CSV: a quoted field is not closed (record " + std::to_string(records.size() + 1) + ")");
+    if (any || !field.empty() || !record.empty() || wasQuoted) endRecord();
+    return records;
+}
+
+std::size_t csvHeaderLines(const std::vector<std::string>& names, const std::vector<std::string>& units) {
+    std::size_t lines = 1;
+    for (const auto* list : {&names, &units})
+        for (const auto& s : *list) lines += static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));
+    return lines;
+}
+
 std::string formatCsv(const std::vector<std::string>& names, const std::vector<std::string>& units,
                       const std::vector<std::vector<double>>& rows) {
     std::string out;
-    for (std::size_t i = 0; i < names.size(); ++i) out += (i ? "," : "") + names[i] + "[" + units[i] + "]";
+    for (std::size_t i = 0; i < names.size(); ++i) out += (i ? "," : "") + csvField(names[i] + "[" + units[i] + "]");
     out += '\n';
     for (const auto& row : rows) {
         for (std::size_t i = 0; i < row.size(); ++i) {
@@ -100,24 +167,29 @@ std::vector<std::string> writeResultFiles(const std::string& dir, const ModelSpe
 }
 
 std::string quoteForGnuplot(const std::string& s) {
+    // A line break would end gnuplot's command inside the string: a space.
     std::string out = "'";
-    for (char c : s) out += (c == '\'') ? std::string("''") : std::string(1, c);
+    for (char c : s) out += (c == '\'') ? std::string("''") : std::string(1, c == '\n' || c == '\r' ? ' ' : c);
     return out + "'";
 }
 
 bool gnuplotAvailable() { return std::system("command -v gnuplot >/dev/null 2>&1") == 0; }
 
 bool renderGnuplotPng(const std::string& png, const std::string& commands, int width, int height) {
+    const std::filesystem::path where = std::filesystem::path(png).parent_path();
     const std::string tmpPng = temporaryNameBeside(png);
+    const std::string scriptPath = temporaryNameBeside(png + ".gp");
+    // Bare names, gnuplot started in their directory: the directory's name
+    // (a '$' reads as a data block, a line break ends a command) stays out.
+    auto bare = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
     std::ostringstream script;
     script << "set terminal pngcairo noenhanced size " << width << "," << height << " font 'DejaVu Sans,10'\n"
-           << "set output " << quoteForGnuplot(tmpPng) << "\n"
+           << "set output " << quoteForGnuplot(bare(tmpPng)) << "\n"
            << commands;
-    const std::string scriptPath = temporaryNameBeside(png + ".gp");
     writeFileAtomically(scriptPath, script.str());
     // Not std::system (it ignores SIGINT); and gnuplot exits 0 on a full
     // disk, so the PNG itself is checked.
-    const bool ok = runTool({"gnuplot", scriptPath}) && isCompletePng(tmpPng);
+    const bool ok = runTool({"gnuplot", bare(scriptPath)}, where.empty() ? "." : where.string()) && isCompletePng(tmpPng);
     discardTemporary(scriptPath);
     if (!ok) {
         discardTemporary(tmpPng);
@@ -205,6 +277,8 @@ std::string formatPlotCommands(const AnalysisResult& result, const std::string& 
     };
     // One panel per group of like magnitudes, each with its own axis.
     const auto panels = plotPanels(result, columns);
+    // The header's lines (a quoted name may hold a line break), not data.
+    const std::size_t headerLines = csvHeaderLines(result.columnNames, result.columnUnits);
     std::ostringstream script;
     script << "set datafile separator ','\nset key outside right\nset grid\n"
            << (result.plotXLabel.find("frequency") != std::string::npos ? "set logscale x\n" : "");
@@ -224,7 +298,7 @@ std::string formatPlotCommands(const AnalysisResult& result, const std::string& 
         script << "plot ";
         for (std::size_t k = 0; k < panels[p].size(); ++k) {
             const std::size_t col = panels[p][k];
-            script << (k ? ", " : "") << quoteForGnuplot(csvPath) << " every ::1 using 1:";
+            script << (k ? ", " : "") << quoteForGnuplot(csvPath) << " skip " << headerLines << " using 1:";
             if (result.columnUnits[col] == "rad")
                 script << "($" << col + 1 << "*180/pi)";
             else
@@ -244,23 +318,35 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
         warning = "gnuplot not found: no plots written (scripts/install-deps installs it)";
         return written;
     }
+    // Every plot is tried; any that is not drawn fails the set, naming all
+    // of them (issue 26 item 8: a full disk gave exit 0 and named the last).
+    std::vector<std::string> missing;
     const auto modes = modeShapeBars(result);
     if (!modes.empty()) {
         if (writeModeShapePlot(dir + "/mode_shapes.png", modes))
             written.push_back(dir + "/mode_shapes.png");
         else
-            warning = "gnuplot failed for plot mode_shapes";
+            missing.push_back("mode_shapes.png");
     }
+    // gnuplot runs in `dir`: the table by its bare name (renderGnuplotPng).
+    const std::string csvName = std::filesystem::path(csvPath).filename().string();
     for (const auto& plot : result.plots) {
         if (plot.second.empty()) continue;
         const std::string png = dir + "/" + plot.first + ".png";
         const std::size_t panels = plotPanels(result, plot.second).size();
         const int height = panels > 1 ? static_cast<int>(300 * panels) + 60 : 560;
-        if (!renderGnuplotPng(png, formatPlotCommands(result, plot.first, plot.second, csvPath), 1000, height)) {
-            warning = "gnuplot failed for plot " + plot.first;
+        if (!renderGnuplotPng(png, formatPlotCommands(result, plot.first, plot.second, csvName), 1000, height)) {
+            missing.push_back(plot.first + ".png");
             continue;
         }
         written.push_back(png);
+    }
+    if (!missing.empty()) {
+        std::string list;
+        for (const auto& m : missing) list += (list.empty() ? "" : ", ") + m;
+        throw OutputError(std::to_string(missing.size()) + " of " + std::to_string(missing.size() + written.size()) +
+                          " plots not drawn (gnuplot failed or left an incomplete PNG: a full disk?): " + list +
+                          "; no output of this run was kept (outputs.plots: false or --no-plots skips the plots)");
     }
     return written;
 }

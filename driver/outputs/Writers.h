@@ -17,7 +17,23 @@ struct RunInfo {
     std::string version;
 };
 
-/// CSV with header `name[unit]`, numbers in shortest round-trip form.
+/// One CSV field per RFC 4180: as is, or in double quotes (a quote inside
+/// doubled) when it holds a comma, a double quote, CR or LF. Every CSV
+/// milldyn writes puts its text fields (headers, statuses, diagnostics)
+/// through this (issue 26 item 4: an element named `lo,ad` gave a header of
+/// more fields than its rows).
+std::string csvField(const std::string& text);
+/// The records of a CSV text per RFC 4180: quoted fields may hold commas,
+/// doubled quotes and line breaks; CRLF and LF both end a record; a final
+/// line break adds no record. Throws std::invalid_argument for a quote left
+/// open or text after a closing quote.
+std::vector<std::vector<std::string>> parseCsv(const std::string& text);
+/// How many lines of the file a CSV header of these names and units spans
+/// (1, plus one per line break inside a name): what gnuplot must skip.
+std::size_t csvHeaderLines(const std::vector<std::string>& names, const std::vector<std::string>& units);
+
+/// CSV with header `name[unit]` (each quoted per csvField when needed),
+/// numbers in shortest round-trip form.
 std::string formatCsv(const std::vector<std::string>& names, const std::vector<std::string>& units,
                       const std::vector<std::vector<double>>& rows);
 /// linear_model.json: degree-of-freedom names and matrices.
@@ -70,6 +86,10 @@ std::string quoteForGnuplot(const std::string& s);
 bool gnuplotAvailable();
 /// Runs gnuplot on `commands` (everything after the terminal and output
 /// lines) to draw `png` (pngcairo, width x height pixels), atomically.
+/// gnuplot runs in png's directory and is given file names relative to it
+/// (the output directory's own name, which may hold '$', quotes or line
+/// breaks, never reaches a gnuplot string): `commands` must name the files
+/// it reads in that directory by their bare names.
 /// Returns false, leaving nothing behind, when gnuplot fails.
 bool renderGnuplotPng(const std::string& png, const std::string& commands, int width, int height);
 

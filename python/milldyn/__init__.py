@@ -15,37 +15,56 @@ in parallel); Ctrl-C stops a run on the main thread at its next sample, and
 a CancelToken stops one from any thread.
 """
 
-import csv
-import os
-import shutil
-import sys
-import tempfile
-import threading
+# The standard modules under private names: `milldyn.` completes to
+# milldyn's own names only (issue 29 item 5).
+import collections as _collections
+import csv as _csv
+import difflib as _difflib
+import os as _os
+import shutil as _shutil
+import sys as _sys
+import tempfile as _tempfile
+import threading as _threading
 
 # Plugin libraries (plugins=[...]) resolve the registry's symbols from the
 # module, as they do from the milldyn executable: load it RTLD_GLOBAL.
-_flags = sys.getdlopenflags()
-sys.setdlopenflags(_flags | os.RTLD_GLOBAL)
+_flags = _sys.getdlopenflags()
+_sys.setdlopenflags(_flags | _os.RTLD_GLOBAL)
 try:
     from . import _milldyn as _core
 finally:
-    sys.setdlopenflags(_flags)
+    _sys.setdlopenflags(_flags)
 
-from .errors import AnalysisFailed, Cancelled, MilldynError, ModelError, OutputFailed, UnitError  # noqa: E402
+from .errors import (AnalysisFailed, Cancelled, MilldynError, ModelError, ModelFileNotFound,  # noqa: E402
+                     OutputFailed, UnitError)
 
 import numpy as _np  # noqa: E402
 
 __version__ = _core.__version__
 CancelToken = _core.CancelToken
 
-__all__ = ["Model", "Result", "Table", "Value", "CancelToken", "sweep", "validate", "elements", "analyses",
-           "load_plugin", "to_si", "quantity", "ModelError", "AnalysisFailed", "OutputFailed", "Cancelled",
-           "UnitError", "MilldynError"]
+__all__ = ["Model", "Result", "Table", "Value", "Matrix", "CancelToken", "sweep", "validate", "elements",
+           "analyses", "load_plugin", "to_si", "quantity", "ModelError", "ModelFileNotFound", "AnalysisFailed",
+           "OutputFailed", "Cancelled", "UnitError", "MilldynError"]
+
+
+def _unit_factor(unit):
+    """A unit as a factor of a product: parenthesised when it holds an
+    operator (``N*m`` -> ``(N*m)``)."""
+    return unit if all(c not in unit for c in "*/^ ") else "(%s)" % unit
 
 
 class Value(float):
     """A number with its unit (and a line saying what it is): ``float(v)`` is
-    the value in ``v.unit``."""
+    the value in ``v.unit``.
+
+    Arithmetic keeps the unit or refuses: ``v + w`` and ``v - w`` need the
+    same unit (a plain number counts as being in ``v.unit``) and keep it;
+    ``v * 2``, ``v / 2``, ``-v``, ``abs(v)`` keep it; ``v * w`` and ``v / w``
+    compose the units (``N*m`` * ``rad/s`` -> ``(N*m)*(rad/s)``; a Value over
+    one of the same unit is ``1``); anything else (``v ** 2`` of a unit,
+    ``v + w`` of two units) raises UnitError. ``float(v)`` drops the unit.
+    """
 
     def __new__(cls, value, unit, doc=""):
         self = super().__new__(cls, value)
@@ -59,6 +78,139 @@ class Value(float):
     def __reduce__(self):
         return (Value, (float(self), self.unit, self.doc))
 
+    def _same_unit(self, other, op):
+        if isinstance(other, Value) and other.unit != self.unit:
+            raise UnitError("%s of %r and %r: the units differ (convert one with milldyn.to_si)" % (op, self, other))
+        return float(other)
+
+    def __add__(self, other):
+        if not isinstance(other, (int, float, _np.integer, _np.floating)):
+            return NotImplemented
+        return Value(float(self) + self._same_unit(other, "sum"), self.unit)
+
+    __radd__ = __add__
+
+    def __sub__(self, other):
+        if not isinstance(other, (int, float, _np.integer, _np.floating)):
+            return NotImplemented
+        return Value(float(self) - self._same_unit(other, "difference"), self.unit)
+
+    def __rsub__(self, other):
+        if not isinstance(other, (int, float, _np.integer, _np.floating)):
+            return NotImplemented
+        return Value(self._same_unit(other, "difference") - float(self), self.unit)
+
+    def __mul__(self, other):
+        if isinstance(other, Value):
+            return Value(float(self) * float(other), "%s*%s" % (_unit_factor(self.unit), _unit_factor(other.unit)))
+        if not isinstance(other, (int, float, _np.integer, _np.floating)) or isinstance(other, bool):
+            return NotImplemented
+        return Value(float(self) * float(other), self.unit)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other):
+        if isinstance(other, Value):
+            unit = "1" if other.unit == self.unit else "%s/%s" % (_unit_factor(self.unit), _unit_factor(other.unit))
+            return Value(float(self) / float(other), unit)
+        if not isinstance(other, (int, float, _np.integer, _np.floating)) or isinstance(other, bool):
+            return NotImplemented
+        return Value(float(self) / float(other), self.unit)
+
+    def __rtruediv__(self, other):
+        if not isinstance(other, (int, float, _np.integer, _np.floating)) or isinstance(other, bool):
+            return NotImplemented
+        return Value(float(other) / float(self), "1/%s" % _unit_factor(self.unit))
+
+    def __pow__(self, other, modulo=None):
+        if self.unit in ("", "1"):
+            return Value(float(self) ** other, self.unit)
+        raise UnitError("%r ** %r: a power of a value with a unit is not kept as a unit; use float(v) ** n" % (self, other))
+
+    def __neg__(self):
+        return Value(-float(self), self.unit)
+
+    def __pos__(self):
+        return self
+
+    def __abs__(self):
+        return Value(abs(float(self)), self.unit)
+
+    def __floordiv__(self, other):
+        raise UnitError("%r // %r: floor division keeps no unit; use float(v) // x" % (self, other))
+
+    __rfloordiv__ = __mod__ = __rmod__ = __divmod__ = __rdivmod__ = __rpow__ = __floordiv__
+
+
+class Matrix(_collections.namedtuple("Matrix", "values unit")):
+    """One matrix of a linear model (``Result.matrices[name]``): ``values``
+    a square numpy array (rows and columns in ``Result.dof_names`` order;
+    A is twice as large: positions, then speeds) and ``unit`` the unit of
+    its entries ("kg*m^2" for M, "N*m*s/rad" for C, "N*m/rad" for K; A is
+    labelled "1/s" though its blocks are 1, 1/s^2 and 1/s: docs/python.md).
+    Unpacks as ``values, unit``."""
+
+    __slots__ = ()
+
+    def __repr__(self):
+        return "<milldyn.Matrix %dx%d [%s]>" % (self.values.shape[0], self.values.shape[1] if self.values.ndim > 1 else 1,
+                                               self.unit)
+
+
+class _Named(dict):
+    """A dict whose missing keys raise KeyError with the nearest names."""
+
+    what = "name"
+
+    def __missing__(self, key):
+        raise KeyError(_unknown(key, list(self), self.what))
+
+
+def _unknown(key, names, what):
+    near = _difflib.get_close_matches(str(key), [str(n) for n in names], n=3, cutoff=0.5)
+    text = "unknown %s %r" % (what, key)
+    if near:
+        text += " (did you mean %s?)" % " or ".join(repr(n) for n in near)
+    elif names:
+        text += " (%d known: %s%s)" % (len(names), ", ".join(repr(n) for n in list(names)[:6]),
+                                       ", ..." if len(names) > 6 else "")
+    return text
+
+
+class _Results(_Named):
+    what = "result"
+
+
+class _Tables(_Named):
+    what = "table"
+
+
+class _Matrices(_Named):
+    what = "matrix"
+
+
+def _utf8(text, what, error=None):
+    """``text`` as a str that UTF-8 can encode: a lone surrogate (from a file
+    name read with surrogateescape, or a bad escape) raises ModelError (or
+    ``error``) naming where, instead of pybind11's TypeError."""
+    text = str(text)
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError as e:
+        message = "%s: %r is not valid text (a lone surrogate %r at offset %d; UTF-8 cannot hold it)" % (
+            what, text, text[e.start:e.end], e.start)
+        if error is UnitError:
+            raise UnitError(message, e.start) from None
+        raise ModelError("<python>:1:%d: error: %s" % (e.start + 1, message), "<python>", 1, e.start + 1, what,
+                         "not valid text (a lone surrogate)") from None
+    return text
+
+
+def _path(path):
+    """A file path for the core: bytes as the file system has them (a name
+    that is not UTF-8 still opens)."""
+    return _os.fsencode(_os.fspath(path))
+
 
 def _text(value):
     """An override's value text: strings as written (with their units),
@@ -66,7 +218,7 @@ def _text(value):
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, str):
-        return value
+        return _utf8(value, "override value")
     if isinstance(value, (int, _np.integer)):
         return str(int(value))
     if isinstance(value, (float, _np.floating)):
@@ -84,11 +236,11 @@ def _overrides(set=None, scenario=None, preset=None, **options):
     is read as the CLI reads --set."""
     out = []
     if scenario is not None:
-        out.append(("use_scenario", str(scenario), False))
+        out.append(("use_scenario", _utf8(scenario, "scenario"), False))
     if preset is not None:
-        out.append(("preset", str(preset), False))
+        out.append(("preset", _utf8(preset, "preset"), False))
     for path, value in (set or {}).items():
-        out.append((str(path), _text(value), _is_si_number(value)))
+        out.append((_utf8(path, "override path"), _text(value), _is_si_number(value)))
     for key, path in (("integrator", "integrator.name"), ("accuracy", "integrator.accuracy"),
                       ("end_time", "scenario.end_time")):
         if options.get(key) is not None:
@@ -111,7 +263,10 @@ class Table:
         self.columns = dict(zip(self.names, columns))
 
     def __getitem__(self, name):
-        return self.columns[name]
+        try:
+            return self.columns[name]
+        except KeyError:
+            raise KeyError(_unknown(name, self.names, "column of table %s" % self.name)) from None
 
     def __contains__(self, name):
         return name in self.columns
@@ -123,8 +278,9 @@ class Table:
         return len(self.columns[self.names[0]]) if self.names else 0
 
     def __repr__(self):
-        return "<milldyn.Table %s: %d rows, %s>" % (
-            self.name, len(self), ", ".join("%s[%s]" % (n, self.units[n]) for n in self.names))
+        shown = ", ".join("%s[%s]" % (n, self.units[n]) for n in self.names[:6])
+        more = ", ... (%d columns)" % len(self.names) if len(self.names) > 6 else ""
+        return "<milldyn.Table %s: %d rows, %s%s>" % (self.name, len(self), shown, more)
 
     def headers(self):
         """The CLI's CSV header: ``name[unit]`` for each column (text
@@ -157,8 +313,12 @@ class Result:
     - ``derived``: values elements derive from their parameters;
     - ``notes``: what happened, in words (the verdicts);
     - ``statistics``: integrator, accuracy, steps, realizations, wall time;
-    - ``dof_names``, ``matrices``: a linear model's (name -> (array, unit));
+    - ``dof_names``, ``matrices``: a linear model's degrees of freedom and
+      its matrices, name -> Matrix(values, unit) (M, C, K, A: docs/python.md);
     - ``files``: what was written (``run(out=...)`` or ``write()``).
+
+    An unknown name in ``summary``, ``derived``, ``tables``, ``matrices`` or
+    a Table raises KeyError with the nearest names.
     """
 
     def __init__(self, model, handle):
@@ -166,20 +326,24 @@ class Result:
         self._handle = handle
         self.analysis = handle.analysis
         self.table = _table(handle.table())
-        self.tables = {self.table.name: self.table}
+        self.tables = _Tables({self.table.name: self.table})
         for t in handle.extra_tables():
             self.tables[t["name"]] = _table(t)
-        self.summary = {n: Value(v, u, doc) for n, v, u, doc in handle.results()}
-        self.derived = {n: Value(v, u, doc) for n, v, u, doc in handle.derived()}
+        self.summary = _Results((n, Value(v, u, doc)) for n, v, u, doc in handle.results())
+        self.derived = _Results((n, Value(v, u, doc)) for n, v, u, doc in handle.derived())
         self.notes = list(handle.notes())
         self.statistics = dict(handle.statistics())
-        self.dof_names, self.matrices = handle.linear_model()
+        self.dof_names, matrices = handle.linear_model()
+        self.matrices = _Matrices((n, Matrix(values, unit)) for n, (values, unit) in matrices.items())
         self.files = []
         self.warning = ""
 
     def __repr__(self):
-        return "<milldyn.Result %s of %s: %s>" % (
-            self.analysis, self.model.name, ", ".join("%s=%r" % kv for kv in self.summary.items()))
+        # Short: a few results; print(result.summary) shows them all.
+        items = list(self.summary.items())
+        shown = ", ".join("%s=%r" % kv for kv in items[:4])
+        more = ", ... (%d results)" % len(items) if len(items) > 4 else ""
+        return "<milldyn.Result %s of %s, %d rows: %s%s>" % (self.analysis, self.model.name, len(self.table), shown, more)
 
     def to_pandas(self):
         """The main table as a pandas DataFrame (units in ``df.attrs``)."""
@@ -191,7 +355,7 @@ class Result:
 
     def write(self, out):
         """Writes the files ``milldyn run --out DIR`` writes; returns their paths."""
-        files, warning = self._handle.write(os.fspath(out))
+        files, warning = self._handle.write(_path(out))
         self.files, self.warning = list(files), warning
         return self.files
 
@@ -202,10 +366,31 @@ _loaded_plugins = set()
 def load_plugin(path):
     """Loads a plugin library's element types (``--plugin LIB.so``); a library
     already loaded by this process is not loaded twice."""
-    path = os.path.realpath(os.fspath(path))
+    path = _os.path.realpath(_os.fspath(path))
     if path not in _loaded_plugins:
-        _core.load_plugin(path)
+        _core.load_plugin(_os.fsencode(path))
         _loaded_plugins.add(path)
+
+
+def _read_model(path, overrides):
+    """The core's reader; a missing file raises ModelFileNotFound (a
+    ModelError and a FileNotFoundError)."""
+    try:
+        return _core.read_model(_path(path), overrides)
+    except ModelError as e:
+        if e.reason.endswith("no such file"):
+            missing = path if e.key == "<file>" else e.reason.split("'")[1] if "'" in e.reason else e.file
+            raise ModelFileNotFound(e.text, e.file, e.line, e.column, e.key, e.reason, e.included_from,
+                                    missing) from None
+        raise
+    except UnicodeDecodeError:
+        # The core's message holds a file name's bytes that are not UTF-8.
+        shown = _os.fsdecode(_path(path)).encode("utf-8", "backslashreplace").decode("utf-8")
+        if not _os.path.exists(path):
+            raise ModelFileNotFound("%s:1:1: error: <file>: cannot open the model file: no such file" % shown, shown,
+                                    1, 1, "<file>", "cannot open the model file: no such file", "", path) from None
+        raise ModelError("%s:1:1: error: <file>: the model's diagnostic names a file whose name is not UTF-8" % shown,
+                         shown, 1, 1, "<file>", "a file name that is not UTF-8") from None
 
 
 class Model:
@@ -213,15 +398,16 @@ class Model:
 
     ``Model(path, set={"elements.belt.stiffness": "2e5 N*m/rad"},
     scenario="idle", preset="fast", plugins=["lib.so"])``; bad input raises
-    ModelError with the CLI's line ``file:line:col: error: key: reason``.
+    ModelError with the CLI's line ``file:line:col: error: key: reason``, a
+    missing file ModelFileNotFound (also a FileNotFoundError).
     """
 
     def __init__(self, path, set=None, scenario=None, preset=None, plugins=()):
         for p in plugins:
             load_plugin(p)
-        self.path = os.fspath(path)
+        self.path = _os.fspath(path)
         self.overrides = _overrides(set, scenario, preset)
-        self._spec = _core.read_model(self.path, self.overrides)
+        self._spec = _read_model(self.path, self.overrides)
 
     @property
     def name(self):
@@ -250,65 +436,139 @@ class Model:
         ``end_time`` add to the model's overrides for this run only.
         ``cancel``: a CancelToken another thread may set."""
         extra = _overrides(set, scenario, preset, integrator=integrator, accuracy=accuracy, end_time=end_time)
-        spec = _core.read_model(self.path, self.overrides + extra) if extra else self._spec
-        on_main = threading.current_thread() is threading.main_thread()
+        spec = _read_model(self.path, self.overrides + extra) if extra else self._spec
+        on_main = _threading.current_thread() is _threading.main_thread()
         result = Result(self, _core.run(spec, cancel, on_main))
         if out is not None:
             result.write(out)
         return result
 
 
-def _axis_text(value):
-    return value if isinstance(value, str) else repr(float(value))
+def _axis_text(value, what):
+    if isinstance(value, bool):
+        raise ModelError("<python>:1:1: error: %s: %r is not a number or text with a unit" % (what, value),
+                         "<python>", 1, 1, what, "not a number")
+    if isinstance(value, str):
+        return _utf8(value, what)
+    if isinstance(value, (int, float, _np.integer, _np.floating)):
+        return repr(float(value))
+    raise ModelError("<python>:1:1: error: %s: %r is not a number or text with a unit" % (what, value),
+                     "<python>", 1, 1, what, "not a number")
 
 
-def sweep(model, grid=None, lhs=None, ranges=None, seed=1, jobs=None, out=None):
+def _count(n, what):
+    """A grid's number of values: a whole number (3 or 3.0), never 2.5."""
+    if isinstance(n, bool) or not isinstance(n, (int, float, _np.integer, _np.floating)) or \
+            (isinstance(n, (float, _np.floating)) and not float(n).is_integer()):
+        raise ModelError("<python>:1:1: error: %s: the number of values must be a whole number, got %r" % (what, n),
+                         "<python>", 1, 1, what, "the number of values must be a whole number")
+    return int(n)
+
+
+def _spec_text(path, spec, ranges):
+    """One path's part of a --grid (or --range) text."""
+    what = "ranges[%r]" % path if ranges else "grid[%r]" % path
+    if isinstance(spec, str):
+        return "%s=%s" % (path, _utf8(spec, what))
+    if isinstance(spec, list):  # a value list
+        if ranges:
+            raise ModelError("<python>:1:1: error: %s: a range is (a, b), not a list" % what, "<python>", 1, 1, what,
+                             "a range is (a, b)")
+        if len(spec) == 0:
+            raise ModelError("<python>:1:1: error: %s: an empty list of values" % what, "<python>", 1, 1, what,
+                             "an empty list of values")
+        if len(spec) == 1:  # "v," is no list: one value is a grid of one
+            return "%s=%s:%s:1" % (path, _axis_text(spec[0], what), _axis_text(spec[0], what))
+        return "%s=%s" % (path, ",".join(_axis_text(v, what) for v in spec))
+    spec = tuple(spec)
+    if ranges:
+        if len(spec) != 2:
+            raise ModelError("<python>:1:1: error: %s: expected (a, b)" % what, "<python>", 1, 1, what, "expected (a, b)")
+        return "%s=%s:%s" % (path, _axis_text(spec[0], what), _axis_text(spec[1], what))
+    if len(spec) == 4 and spec[3] in ("log", "lin"):
+        return "%s=%s:%s:%d:%s" % (path, _axis_text(spec[0], what), _axis_text(spec[1], what), _count(spec[2], what),
+                                   spec[3])
+    if len(spec) != 3:
+        raise ModelError("<python>:1:1: error: %s: expected (a, b, n), (a, b, n, \"log\"), a list of values or "
+                         "\"a:b:n\"" % what, "<python>", 1, 1, what, "expected (a, b, n)")
+    return "%s=%s:%s:%d" % (path, _axis_text(spec[0], what), _axis_text(spec[1], what), _count(spec[2], what))
+
+
+def _axis_option(key, spec, ranges):
+    """A --grid/--range text; a tuple of paths ties them to one axis: one
+    spec for all, or a list with one spec per path."""
+    if isinstance(key, tuple):
+        paths = [_utf8(k, "grid path") for k in key]
+        per_path = isinstance(spec, list) and len(spec) == len(paths) and \
+            all(isinstance(x, (tuple, list)) or (isinstance(x, str) and (":" in x or "," in x)) for x in spec)
+        specs = spec if per_path else [spec] * len(paths)
+        return ";".join(_spec_text(p, x, ranges) for p, x in zip(paths, specs))
+    return _spec_text(_utf8(key, "grid path"), spec, ranges)
+
+
+def sweep(model, grid=None, lhs=None, ranges=None, seed=1, jobs=None, out=None, progress=None, cancel=None,
+          integrator=None, accuracy=None, end_time=None):
     """Runs a model over a grid or a Latin hypercube, like ``milldyn sweep``.
 
-    - ``grid={"path": (a, b, n)}`` (or ``"a:b:n"``): n values from a to b for
-      each path, every combination; a and b numbers (SI) or text with the same
-      unit ("10 N*m");
+    - ``grid={"path": spec}``, every combination of the paths' values; spec:
+      ``(a, b, n)`` n values from a to b, ``(a, b, n, "log")`` spaced evenly
+      in log, a list ``[v1, v2, ...]`` of values, or the CLI's text
+      ``"a:b:n"``; values are numbers (SI) or text with the same unit
+      ("10 N*m"); n a whole number;
+    - a tuple of paths as the key ties them to one axis (they move
+      together): ``grid={("elements.fw1.inertia", "elements.fw2.inertia"):
+      (1, 5, 5)}`` gives both the same values; a list with one spec per path
+      gives each its own (``[("1000 rpm", "1500 rpm", 6), ("990 rpm",
+      "1485 rpm", 6)]``);
     - ``lhs=N, ranges={"path": (a, b)}``: N points of a Latin hypercube
-      (``seed``).
+      (``seed``); a tuple of paths ties ranges as in ``grid``.
 
-    ``jobs`` threads (default: all cores). Returns a Table: ``index``, the
-    swept values (in the unit they were given in, ``SI`` otherwise), ``status``
-    (ok | bad_input | failed), every result with its unit (NaN where a point
-    has none: see ``status`` and ``diagnostic``). Only with ``out`` does the
+    ``integrator``, ``accuracy``, ``end_time`` apply to every point (as the
+    CLI's options). ``jobs`` threads (default: all cores).
+    ``progress(done, total, failed)`` is called on the calling thread as
+    points finish; it may return False to stop the sweep, as
+    ``cancel.cancel()`` on a CancelToken does from any thread: running
+    points stop at their next sample, finished ones are kept in ``out``
+    (they resume), and Cancelled is raised. A sweep whose every point
+    failed (bad input or a failed analysis; the CLI exits 1) raises
+    AnalysisFailed naming the first point's diagnostic.
+
+    Returns a Table: ``index``, the swept values (in the unit they were
+    given in, ``SI`` otherwise), ``status`` (ok | bad_input | failed | a
+    start's verdict), every result with its unit (NaN where a point has
+    none: see ``status`` and ``diagnostic``). Only with ``out`` does the
     sweep's directory (``sweep.csv``, ``points/``) stay on disk.
     """
     if not isinstance(model, Model):
         model = Model(model)
-    grids, rng = [], []
-    for path, spec in (grid or {}).items():
-        if isinstance(spec, str):
-            grids.append("%s=%s" % (path, spec))
-        else:
-            a, b, n = spec
-            grids.append("%s=%s:%s:%d" % (path, _axis_text(a), _axis_text(b), int(n)))
-    for path, spec in (ranges or {}).items():
-        if isinstance(spec, str):
-            rng.append("%s=%s" % (path, spec))
-        else:
-            a, b = spec
-            rng.append("%s=%s:%s" % (path, _axis_text(a), _axis_text(b)))
-    directory = os.fspath(out) if out is not None else tempfile.mkdtemp(prefix="milldyn-sweep-")
+    grids = [_axis_option(k, v, False) for k, v in (grid or {}).items()]
+    rng = [_axis_option(k, v, True) for k, v in (ranges or {}).items()]
+    overrides = model.overrides + _overrides(integrator=integrator, accuracy=accuracy, end_time=end_time)
+    directory = _os.fspath(out) if out is not None else _tempfile.mkdtemp(prefix="milldyn-sweep-")
+    if progress is not None and not callable(progress):
+        raise TypeError("progress must be callable as progress(done, total, failed)")
     try:
-        summary = _core.sweep(model.path, model.overrides, grids, rng, int(lhs or 0), int(seed),
-                              int(jobs or os.cpu_count() or 1), directory)
-        table = _read_sweep_csv(os.path.join(directory, "sweep.csv"))
+        summary = _core.sweep(_path(model.path), overrides, grids, rng, int(lhs or 0), int(seed),
+                              int(jobs or _os.cpu_count() or 1), _path(directory), progress, cancel)
+        table = _read_sweep_csv(_os.path.join(directory, "sweep.csv"))
     finally:
         if out is None:
-            shutil.rmtree(directory, ignore_errors=True)
+            _shutil.rmtree(directory, ignore_errors=True)
     table.summary = summary
     if out is None:
         table.summary["files"] = []
+    if summary["total"] > 0 and summary["errors"] == summary["total"]:
+        first = table["diagnostic"][0] if len(table) else ""
+        raise AnalysisFailed("milldyn: sweep failed: every one of its %d points failed (first: %s)"
+                             % (summary["total"], first), first)
     return table
 
 
 def _read_sweep_csv(path):
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
+    # RFC 4180 (the csv module): a quoted path or name may hold commas,
+    # quotes and line breaks.
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = list(_csv.reader(f))
     header, body = rows[0], rows[1:]
     names, units = [], []
     for h in header:
@@ -354,12 +614,53 @@ def analyses():
 
 def to_si(text, unit):
     """``to_si("1500 rpm", "rad/s")`` -> 157.07...: text with a unit to the SI
-    unit a key wants (a bare number is SI already); UnitError otherwise."""
-    return _core.to_si(str(text), unit)
+    unit a key wants (a bare number is SI already). Raises UnitError for text
+    that does not parse, a unit of another dimension, or a ``unit`` that is
+    not a coherent SI unit ("rpm", "xyz")."""
+    return _core.to_si(_utf8(text, "text", UnitError), _utf8(unit, "unit", UnitError))
+
+
+# The coherent SI unit of each unit name the parser knows (Units.h).
+_SI_NAMES = {"kg": "kg", "g": "kg", "t": "kg", "m": "m", "mm": "m", "cm": "m", "um": "m", "km": "m",
+             "L": "m^3", "s": "s", "ms": "s", "min": "s", "h": "s", "rad": "rad", "deg": "rad", "rev": "rad",
+             "rpm": "rad/s", "Hz": "1/s", "N": "N", "kN": "N", "MN": "N", "Pa": "Pa", "kPa": "Pa", "MPa": "Pa",
+             "GPa": "Pa", "W": "W", "kW": "W", "MW": "W", "J": "J", "kJ": "J", "%": "1", "A": "A"}
+
+
+def _si_unit_of(text):
+    """The unit of ``text`` with every unit name replaced by its coherent
+    SI name ("20 kN*m" -> "N*m", "3 mm/min" -> "m/s"); None if unsure."""
+    import re
+    m = re.match(r"\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*(.*?)\s*$", text)
+    if not m or not m.group(3):
+        return None
+    unit = m.group(3)
+    if unit in _SI_NAMES:  # one name: its SI unit as is ("rpm" -> "rad/s")
+        return _SI_NAMES[unit]
+    ok = True
+
+    def name(match):
+        nonlocal ok
+        si = _SI_NAMES.get(match.group(0))
+        if si is None:
+            ok = False
+            return match.group(0)
+        return si if all(c not in si for c in "/^*") else "(%s)" % si
+
+    out = re.sub(r"[A-Za-z%]+", name, unit)
+    return out if ok else None
 
 
 def quantity(text):
-    """``quantity("20 N*m")`` -> Value(20.0, "kg*m^2/s^2"): text with a unit
-    to its SI value and the SI unit of its dimension."""
-    value, unit = _core.parse_quantity(str(text))
-    return Value(value, unit)
+    """``quantity("20 kN*m")`` -> Value(20000.0, "N*m"): text with a unit to
+    its SI value, in the SI units of the names it was written with ("rpm" ->
+    "rad/s", "kN*m" -> "N*m", "%" -> "1"); UnitError if it does not parse."""
+    text = _utf8(text, "text", UnitError)
+    value, dimension = _core.parse_quantity(text)
+    unit = _si_unit_of(text)
+    if unit is not None:
+        try:
+            return Value(_core.to_si(text, unit), unit)
+        except MilldynError:
+            pass
+    return Value(value, dimension)

@@ -23,6 +23,20 @@ class ModelError(MilldynError, ValueError):
         self.key, self.reason, self.included_from = key, reason, included_from
 
 
+class ModelFileNotFound(ModelError, FileNotFoundError):
+    """The model file (or a part it includes) does not exist: a ModelError
+    (CLI exit code 2) that ``except FileNotFoundError`` catches too;
+    ``filename`` is the missing file."""
+
+    def __init__(self, text, file="", line=0, column=0, key="", reason="", included_from="", filename=""):
+        ModelError.__init__(self, text, file, line, column, key, reason, included_from)
+        import errno
+        self.errno, self.strerror, self.filename = errno.ENOENT, "No such file or directory", filename or file
+
+    def __str__(self):
+        return self.text
+
+
 class AnalysisFailed(MilldynError, RuntimeError):
     """The analysis failed (CLI exit code 1); ``reason`` names the element or
     quantity and the simulated time."""

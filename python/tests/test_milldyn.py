@@ -93,7 +93,7 @@ def test_numbers_are_si_and_text_has_units():
     assert a.summary["resistance_torque"] == 20.0 and a.summary["resistance_torque"].unit == "N*m"
     assert milldyn.to_si("1500 rpm", "rad/s") == pytest.approx(1500 * 2 * math.pi / 60, rel=1e-15)
     q = milldyn.quantity("20 kN*m")
-    assert float(q) == 20000.0 and q.unit == "kg*m^2/s^2"
+    assert float(q) == 20000.0 and q.unit == "N*m"  # the SI units of the names written (issue 29 item 5)
     with pytest.raises(milldyn.UnitError, match="did you mean 'rpm'"):
         milldyn.to_si("1500 rmp", "rad/s")
 

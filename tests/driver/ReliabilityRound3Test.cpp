@@ -326,10 +326,10 @@ TEST(InputsRefusedUpFront, GridWithABareNumberAtOneEndIsRefused) {
     for (const std::string g : {"elements.charge.fill=25 %:0.45:3", "scenario.speed=1400 rpm:150:3",
                                 "scenario.speed=150:1400 rpm:3"}) {
         const SpecError e = optionErrorOf([&] { parseGrid(g); });
-        EXPECT_TRUE(contains(e.what(), "give the unit on both ends or on neither")) << e.formatted();
+        EXPECT_TRUE(contains(e.what(), "write the unit on each")) << e.formatted();
     }
     const SpecError r = optionErrorOf([] { parseRange("elements.charge.fill=25 %:0.45"); });
-    EXPECT_TRUE(contains(r.what(), "give the unit on both ends or on neither")) << r.formatted();
+    EXPECT_TRUE(contains(r.what(), "write the unit on each")) << r.formatted();
     EXPECT_EQ(parseGrid("elements.charge.fill=0.25:0.45:3").values.back(), 0.45);
     EXPECT_EQ(parseGrid("elements.charge.fill=25 %:45 %:3").values.back(), 45.0);
 }
