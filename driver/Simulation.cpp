@@ -1,5 +1,7 @@
 #include "driver/Simulation.h"
 
+#include "driver/CpodesMessages.h"
+
 #include "plugins/scene/EnergyMeter.h"
 #include "plugins/scene/Format.h"
 
@@ -49,51 +51,16 @@ void interpolateHermite(double t0, const SimTK::Vector& y0, const SimTK::Vector&
     for (int i = 0; i < y.size(); ++i) y[i] = h00 * y0[i] + h10 * f0[i] + h01 * y1[i] + h11 * f1[i];
 }
 
-// CPodes (SUNDIALS) prints its warnings and errors ("[CPODES ERROR] ...")
-// to the FILE* that `stderr` was when the integrator was made, in front of
-// our own one-line message. Every CPodes integrator is made with `stderr`
-// pointing, for that moment, at a sink that keeps the text of the thread
-// that integrates (the one that will catch the failure); a failure folds
-// the last error into its message (cpodesError), everything else is dropped.
-thread_local std::string t_cpodesText;
-
-ssize_t keepCpodesText(void*, const char* buffer, size_t size) {
-    if (t_cpodesText.size() < 4096) t_cpodesText.append(buffer, std::min<size_t>(size, 4096 - t_cpodesText.size()));
-    return static_cast<ssize_t>(size);
-}
-
-FILE* cpodesSink() {
-    static FILE* const sink = [] {
-        cookie_io_functions_t io{nullptr, keepCpodesText, nullptr, nullptr};
-        FILE* f = fopencookie(nullptr, "w", io);
-        if (f) setvbuf(f, nullptr, _IONBF, 0);
-        return f;
-    }();
-    return sink;
-}
-
+// CPodes' own messages: driver/CpodesMessages (a sink per thread, no text
+// of another thread swallowed).
 std::unique_ptr<SimTK::Integrator> makeCPodes(const SimTK::System& system, SimTK::CPodes::LinearMultistepMethod method,
                                               SimTK::CPodes::NonlinearSystemIterationType iteration) {
-    static std::mutex swapping;
-    std::lock_guard<std::mutex> lock(swapping);
-    struct Restore {
-        FILE* saved = stderr;
-        ~Restore() { stderr = saved; }
-    } restore;
-    if (FILE* sink = cpodesSink()) stderr = sink;
-    return std::make_unique<SimTK::CPodesIntegrator>(system, method, iteration);
+    return makeCpodesIntegrator(system, method, iteration);
 }
 
 /// The last error CPodes reported on this thread, on one line ("" if none);
 /// clears what was kept.
-std::string cpodesError() {
-    std::string text;
-    text.swap(t_cpodesText);
-    const auto at = text.rfind("ERROR]");
-    if (at == std::string::npos) return "";
-    const auto body = text.find('\n', at);
-    return body == std::string::npos ? "" : simbodyMessage(text.substr(body + 1));
-}
+std::string cpodesError() { return takeCpodesError(); }
 
 std::string number(double v) { return formatNumber(v, 4); }
 

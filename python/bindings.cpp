@@ -412,6 +412,8 @@ PYBIND11_MODULE(_milldyn, m) {
             d["tolerance"] = r.tolerance;
             d["status"] = r.status;
             d["note"] = r.note;
+            // An observation's expected band (None for other rows).
+            d["band"] = r.band ? py::object(py::make_tuple(r.band->low, r.band->high)) : py::object(py::none());
             out.append(d);
         }
         return out;

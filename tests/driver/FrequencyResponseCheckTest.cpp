@@ -44,7 +44,27 @@ TEST(FrequencyResponseCheck, WithoutChecksTheLinearResponseStillRuns) {
     o.push_back({"scenarios.response.check_frequencies", "[]"});
     o.push_back({"scenarios.response.points", "20"});
     const AnalysisResult r = runAnalysis(readModelFile(kCrusher, defaultModelReader(), o));
-    EXPECT_EQ(r.rows.size(), 20u);
+    // The linear response: 20 frequencies, increasing, every value finite;
+    // and no time simulation was run (no time_checks table).
+    ASSERT_EQ(r.rows.size(), 20u);
+    for (std::size_t i = 0; i < r.rows.size(); ++i) {
+        for (double v : r.rows[i]) EXPECT_TRUE(std::isfinite(v)) << "row " << i;
+        if (i > 0) {
+            EXPECT_GT(r.rows[i][0], r.rows[i - 1][0]);
+        }
+    }
+    for (const auto& t : r.extraTables) EXPECT_NE(t.name, "time_checks");
+    // A response of the nearly undamped chain: its largest amplitude is
+    // far above its smallest (the resonances are in the range).
+    double lo = INFINITY, hi = 0;
+    for (std::size_t c = 1; c < r.columnNames.size(); ++c)
+        if (r.columnNames[c].find("amplitude") != std::string::npos)
+            for (const auto& row : r.rows) {
+                lo = std::min(lo, std::abs(row[c]));
+                hi = std::max(hi, std::abs(row[c]));
+            }
+    ASSERT_GT(hi, 0) << "no amplitude column";
+    EXPECT_GT(hi, 10 * lo);
 }
 
 

@@ -138,11 +138,29 @@ TEST(ModelInclude, MisspelledIncludeKeySuggestsInclude) {
 
 TEST(ModelInclude, AssembledLayoutRuns) {
     const ModelSpec spec = read(kData + "/include_two_drums.yaml");
+    // The layout assembled: the carrier of parts/carrier.yaml, and the drum
+    // part twice, each drum on the carrier, its coupling between the
+    // carrier and its own drum, the right charge set to 80 N*m.
+    std::vector<std::string> bodies;
+    for (const auto& b : spec.bodies) bodies.push_back(b.name + " on " + b.joint.parent);
+    EXPECT_EQ(bodies, (std::vector<std::string>{"carrier on ground", "left_drum on carrier", "right_drum on carrier"}));
+    std::vector<std::string> elements;
+    for (const auto& e : spec.elements) elements.push_back(e.name + ": " + e.type);
+    EXPECT_EQ(elements, (std::vector<std::string>{"motor: InductionMotor", "left_drive: TorsionalCoupling",
+                                                  "left_charge: ResistanceTorque", "right_drive: TorsionalCoupling",
+                                                  "right_charge: ResistanceTorque"}));
+    EXPECT_EQ(spec.findElement("left_drive")->names("bodies"), (std::vector<std::string>{"carrier", "left_drum"}));
+    EXPECT_EQ(spec.findElement("right_drive")->names("bodies"), (std::vector<std::string>{"carrier", "right_drum"}));
+    EXPECT_EQ(spec.findElement("left_charge")->number("constant_torque"), 50.0);
+    EXPECT_EQ(spec.findElement("right_charge")->number("constant_torque"), 80.0);
+    // It runs, and the heavier charge loads its own coupling more.
     const AnalysisResult r = runAnalysis(spec);
-    bool found = false;
-    for (const auto& s : r.results)
-        if (s.name == "peak.right_drive.torque") found = std::isfinite(s.value) && s.value != 0;
-    EXPECT_TRUE(found);
+    const ResultScalar* left = r.find("peak.left_drive.torque");
+    const ResultScalar* right = r.find("peak.right_drive.torque");
+    ASSERT_NE(left, nullptr);
+    ASSERT_NE(right, nullptr);
+    EXPECT_TRUE(std::isfinite(left->value) && std::isfinite(right->value));
+    EXPECT_GT(std::abs(right->value), std::abs(left->value));
 }
 
 /// Writes files into a fresh directory for the tests that need variations.

@@ -20,9 +20,11 @@ struct Result {
     std::string err;
 };
 
-Result runMilldyn(const std::string& args) {
+/// Runs milldyn; its standard output goes to `outFile` (discarded if empty).
+Result runMilldyn(const std::string& args, const std::string& outFile = "") {
     const std::string errFile = std::filesystem::temp_directory_path().string() + "/milldyn-plugintest.err";
-    const std::string cmd = std::string(MILLDYN_BINARY) + " " + args + " >/dev/null 2>" + errFile;
+    const std::string cmd = std::string(MILLDYN_BINARY) + " " + args + " >" + (outFile.empty() ? "/dev/null" : outFile) +
+                            " 2>" + errFile;
     const int status = std::system(cmd.c_str());
     std::ifstream in(errFile);
     std::string err((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -53,8 +55,22 @@ TEST(PluginTest, WithoutThePluginTheTypeIsUnknown) {
 }
 
 TEST(PluginTest, InfoListsThePluginElement) {
-    const Result r = runMilldyn("info " + kModel + " --plugin " + MILLDYN_EXAMPLE_PLUGIN);
-    EXPECT_EQ(r.code, 0) << r.err;
+    // `info --json` names the plugin's element with its type, and lists the
+    // outputs it registered (its torque probe), as for a built-in element.
+    const std::string out = std::filesystem::temp_directory_path().string() + "/milldyn-plugintest-info.json";
+    const Result r = runMilldyn("info " + kModel + " --json --plugin " + MILLDYN_EXAMPLE_PLUGIN, out);
+    ASSERT_EQ(r.code, 0) << r.err;
+    std::ifstream in(out);
+    const auto info = nlohmann::json::parse(in);
+    ASSERT_TRUE(info["elements"].contains("push")) << info.dump();
+    EXPECT_EQ(info["elements"]["push"], "ConstantTorque");
+    EXPECT_TRUE(info["outputs"].contains("push.torque")) << info["outputs"].dump();
+    // And the text form names it the same way.
+    const std::string text = std::filesystem::temp_directory_path().string() + "/milldyn-plugintest-info.txt";
+    ASSERT_EQ(runMilldyn("info " + kModel + " --plugin " + MILLDYN_EXAMPLE_PLUGIN, text).code, 0);
+    std::ifstream t(text);
+    const std::string printed((std::istreambuf_iterator<char>(t)), std::istreambuf_iterator<char>());
+    EXPECT_NE(printed.find("element push: ConstantTorque"), std::string::npos) << printed;
 }
 
 TEST(PluginTest, LibraryOfAnotherAbiIsRefusedWithExitTwo) {

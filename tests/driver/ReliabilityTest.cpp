@@ -10,8 +10,11 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <thread>
 
@@ -370,14 +373,36 @@ TEST(ModelFileReading, FuzzFindingLoadAllHangIsASpecError) {
 
 // Item 3: half_angle 1e-7 rad and fill 1e-300 gave "internal error"
 // (a negative central inertia from cancellation) when the scene was built.
+// Built, the segment holds what its closed form says: the filled fraction
+// (2γ − sin 2γ)/(2π), the mass ρ l r² (2γ − sin 2γ)/2, and the centroid,
+// 4 r sin³γ/(3 (2γ − sin 2γ)), at the wall (→ r as γ → 0); 2γ − sin 2γ by
+// its series (x³/6 − x⁵/120, x = 2γ) so the expectation itself does not
+// cancel.
 TEST(TinyChargeSegments, BuildAtTinyHalfAnglesAndFills) {
-    for (const Override& o : std::vector<Override>{{"elements.charge1.half_angle", "1e-6 rad"},
-                                                    {"elements.charge1.half_angle", "1e-7 rad"},
-                                                    {"elements.charge1.half_angle", "1e-8 rad"},
-                                                    {"elements.charge1.fill", "1e-300"}}) {
-        SCOPED_TRACE(o.path + "=" + o.value);
-        const ModelSpec spec = readModelFile(kModels + "planetary_gear_100x200.yaml", defaultModelReader(), {o});
-        EXPECT_NO_THROW(buildScene(spec));
+    const double rho = 4800, l = 0.2, r = 0.05;  // charge1 of the model file
+    struct Case {
+        Override set;
+        double fill;  ///< the filled fraction it asks for
+    };
+    auto fillOf = [](double gamma) {
+        const double x = 2 * gamma;
+        return (x * x * x / 6 - x * x * x * x * x / 120) / (2 * M_PI);
+    };
+    for (const Case& c : std::vector<Case>{{{"elements.charge1.half_angle", "1e-6 rad"}, fillOf(1e-6)},
+                                           {{"elements.charge1.half_angle", "1e-7 rad"}, fillOf(1e-7)},
+                                           {{"elements.charge1.half_angle", "1e-8 rad"}, fillOf(1e-8)},
+                                           {{"elements.charge1.fill", "1e-300"}, 1e-300}}) {
+        SCOPED_TRACE(c.set.path + "=" + c.set.value);
+        const ModelSpec spec = readModelFile(kModels + "planetary_gear_100x200.yaml", defaultModelReader(), {c.set});
+        std::unique_ptr<Scene> scene;
+        ASSERT_NO_THROW(scene = buildScene(spec));
+        std::map<std::string, double> derived;
+        for (const auto& d : scene->derivedValues()) derived[d.name] = d.value;
+        EXPECT_NEAR(derived.at("charge1.fill") / c.fill, 1.0, 1e-6);
+        EXPECT_NEAR(derived.at("charge1.mass") / (rho * l * r * r * M_PI * c.fill), 1.0, 1e-6);
+        EXPECT_NEAR(derived.at("charge1.centroid_radius") / r, 1.0, 1e-6);
+        const double inertia = derived.at("charge1.axis_inertia");
+        EXPECT_TRUE(std::isfinite(inertia) && inertia >= 0) << inertia;
     }
 }
 

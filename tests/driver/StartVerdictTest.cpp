@@ -1,6 +1,8 @@
 // The start verdicts of a transient (driver/analyses/Transient.cpp), the
 // exit code of a run whose start did not complete, a sweep's status per
 // point, and the start validation cases (validation/cases/StartCases.cpp).
+#include "../validation/SectionCounts.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -97,7 +99,9 @@ TEST(StartValidation, EveryStartCasePasses) {
     const auto rows = startCases("");
     EXPECT_GE(rows.size(), 46u);  // converter, currents, roll-back, backstop and dq rows included
     for (const auto& r : rows) EXPECT_EQ(r.status, "pass") << r.caseName << " " << r.quantity << " rel " << r.relError;
+    test::expectSectionCounts(rows, "Motor starts (issue 15)", {46, 0, 0, 0});
 }
+
 
 }  // namespace
 }  // namespace milldyn

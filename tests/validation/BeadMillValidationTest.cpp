@@ -5,6 +5,8 @@
 
 #include "validation/cases/ValidationCases.h"
 
+#include "SectionCounts.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -57,6 +59,11 @@ TEST(BeadMillValidation, FlaggedRowsAreTheLiteralReadingAndThePapersDeflections)
     }
     EXPECT_EQ(resolved, 4);
     EXPECT_EQ(flagged, 4 + 2);
+}
+
+
+TEST(BeadMillValidation, SectionCountsArePinnedAndInTheDocs) {
+    test::expectSectionCounts(allRows(), "Bead mill rotor (seed 001)", {38, 0, 6, 0});
 }
 
 }  // namespace

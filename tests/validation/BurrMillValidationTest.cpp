@@ -4,6 +4,8 @@
 
 #include "validation/cases/ValidationCases.h"
 
+#include "SectionCounts.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -68,6 +70,11 @@ TEST(BurrMillValidation, FilterSelectsCasesByName) {
     ASSERT_FALSE(rows.empty());
     for (const auto& r : rows) EXPECT_EQ(r.caseName, "burr_mill_coastdown_3p2kW");
     EXPECT_TRUE(burrMillCases("no_such_case").empty());
+}
+
+
+TEST(BurrMillValidation, SectionCountsArePinnedAndInTheDocs) {
+    test::expectSectionCounts(allBurrMillRows(), "Burr mill (seed 003)", {72, 0, 4, 0});
 }
 
 }  // namespace

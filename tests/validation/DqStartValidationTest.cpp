@@ -6,6 +6,8 @@
 
 #include "validation/cases/ValidationCases.h"
 
+#include "SectionCounts.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,7 +22,9 @@ TEST(DqStartValidation, EveryCasePasses) {
     for (const auto& r : rows)
         EXPECT_EQ(r.status, "pass") << r.caseName << ": " << r.quantity << " " << r.multibody.value_or(NAN) << " vs "
                                     << r.oracle << " rel " << r.relError << " tol " << r.tolerance;
+    test::expectSectionCounts(rows, "The dq machine against an independent transient oracle (issue 15)", {33, 0, 0, 0});
 }
+
 
 }  // namespace
 }  // namespace milldyn

@@ -30,17 +30,10 @@ fs::path freshDirectory(const std::string& name) {
 std::vector<ValidationRow> madeUpRows() {
     std::vector<ValidationRow> rows;
     rows.push_back(compareRow("alpha_steady", "speed", "rad/s", 1.0, 1.0, 1e-6, "same equations"));
-    ValidationRow misprint;
-    misprint.caseName = "alpha_table";
-    misprint.quantity = "Mc printed vs eq 14";
-    misprint.unit = "N*m";
-    misprint.paper = 18.1;
-    misprint.oracle = 16.48;
-    misprint.relError = 0.098;
-    misprint.tolerance = 0.003;
-    misprint.status = "flagged";
-    misprint.note = "the printed <t_v> & 1.10 s is a misprint for 1.00 s";
-    rows.push_back(misprint);
+    rows.push_back(paperRow("alpha_table", "Mc printed vs eq 14", "N*m", 18.1, 16.48, 0.003, RowPolicy::Misprint,
+                            "the printed <t_v> & 1.10 s is a misprint for 1.00 s"));
+    rows.push_back(asObservation(compareRow("alpha_start", "start time, another start", "s", 4.88, 4.83, 0.01),
+                                 {4.7, 5.0, "between the bounds"}));
     rows.push_back(compareRow("alpha_broken", "torque", "N*m", 2.0, 1.0, 1e-6, "a regression"));
     rows.push_back(compareRow("zeta_unclaimed", "frequency", "rad/s", 3.0, 3.0, 1e-6));
     return rows;
@@ -109,9 +102,11 @@ TEST(ReportWriter, CountsSectionsMisprintsFailuresAndPlots) {
     EXPECT_FALSE(sections.betaCalled) << "a section without rows must not compute its plots";
 
     const std::string md = readAll(dir / "report.md");
-    EXPECT_NE(md.find("**Totals:** 2 pass, 1 flagged, 1 fail (4 comparisons)."), std::string::npos);
-    EXPECT_NE(md.find("## Alpha mill (seed 999): 1 pass, 1 flagged, 1 fail"), std::string::npos);
-    EXPECT_NE(md.find("## Other cases: 1 pass, 0 flagged, 0 fail"), std::string::npos);
+    EXPECT_NE(md.find("**Totals:** 2 pass, 1 flagged, 1 info, 1 fail (5 comparisons)."), std::string::npos);
+    EXPECT_NE(md.find("## Alpha mill (seed 999): 1 pass, 1 flagged, 1 info, 1 fail"), std::string::npos);
+    EXPECT_NE(md.find("## Other cases: 1 pass, 0 flagged, 0 info, 0 fail"), std::string::npos);
+    EXPECT_NE(md.find("### Observations within their expected bands (1)"), std::string::npos);
+    EXPECT_NE(md.find("expected [4.7, 5]: between the bounds"), std::string::npos);
     EXPECT_EQ(md.find("Beta crusher"), std::string::npos);
     EXPECT_NE(md.find("### Flagged misprints (1)"), std::string::npos);
     EXPECT_NE(md.find("### FAILURES (1)"), std::string::npos);

@@ -4,6 +4,8 @@
 
 #include "validation/cases/ValidationCases.h"
 
+#include "SectionCounts.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -54,6 +56,11 @@ TEST(RollCrusherValidation, FlaggedRowsAreOnlyThePapersApproximations) {
             EXPECT_NE(r.quantity.find("approximate"), std::string::npos) << r.quantity;
             EXPECT_FALSE(r.multibody.has_value());
         }
+}
+
+
+TEST(RollCrusherValidation, SectionCountsArePinnedAndInTheDocs) {
+    test::expectSectionCounts(allCrusherRows(), "Roll crusher (seed 004)", {67, 0, 14, 0});
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include "validation/cases/ValidationCases.h"
 
+#include "SectionCounts.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
@@ -27,7 +29,9 @@ TEST(TumblingMillValidation, EveryComparisonPassesAndEveryCaseIsThere) {
     EXPECT_EQ(perCase["tumbling_mill_chain_frequencies"], 4);
     EXPECT_EQ(perCase["tumbling_mill_girth_gear_teeth"], 2);
     EXPECT_EQ(perCase["tumbling_mill_start_energy"], 1);
+    test::expectSectionCounts(rows, "Tumbling ball mill with girth-gear drive (issue 19)", {31, 0, 0, 0});
 }
+
 
 }  // namespace
 }  // namespace milldyn

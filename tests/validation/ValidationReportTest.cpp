@@ -66,7 +66,7 @@ TEST(ValidationReport, BothMachinesWithTable1PlotsAndFlaggedMisprints) {
 
     const std::string md = readAll(dir / "report.md");
     std::ostringstream totals;
-    totals << "**Totals:** " << counts.pass << " pass, " << counts.flagged << " flagged, " << counts.fail << " fail";
+    totals << "**Totals:** " << formatStatusCounts(counts);
     EXPECT_NE(md.find(totals.str()), std::string::npos) << totals.str();
     EXPECT_EQ(counts.fail, 0);
     EXPECT_GT(counts.flagged, 0);

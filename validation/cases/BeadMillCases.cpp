@@ -293,20 +293,10 @@ void dragCase(int which, std::vector<ValidationRow>& rows) {
 
 ValidationRow paperRow(const std::string& name, const std::string& quantity, const std::string& unit,
                        double printed, double oracle, double tolerance, bool expectMismatch, const std::string& note) {
-    ValidationRow r;
-    r.caseName = name;
-    r.quantity = quantity;
-    r.unit = unit;
-    r.paper = printed;
-    r.oracle = oracle;
-    r.relError = std::abs(printed - oracle) / std::abs(oracle);
-    r.tolerance = tolerance;
-    const bool within = r.relError <= tolerance;
     // A known mismatch is flagged when it shows, and fails if it vanished
     // (then the explanation would be wrong).
-    r.status = expectMismatch ? (within ? "fail" : "flagged") : (within ? "pass" : "fail");
-    r.note = note;
-    return r;
+    return milldyn::paperRow(name, quantity, unit, printed, oracle, tolerance,
+                             expectMismatch ? RowPolicy::Misprint : RowPolicy::Judged, note);
 }
 
 void fitCase(std::vector<ValidationRow>& rows) {

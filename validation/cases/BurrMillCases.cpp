@@ -118,24 +118,12 @@ void coastdownCase(double kW, std::vector<ValidationRow>& rows) {
 ValidationRow paperRow(const std::string& name, const std::string& quantity, const std::string& unit,
                        double printed, double oracle, double halfUnit, bool knownMisprint,
                        const std::string& misprintNote) {
-    ValidationRow r;
-    r.caseName = name;
-    r.quantity = quantity;
-    r.unit = unit;
-    r.paper = printed;
-    r.oracle = oracle;
-    r.relError = std::abs(printed - oracle) / std::abs(oracle);
     // Printing precision: half a unit in the last printed digit.
-    r.tolerance = halfUnit / std::abs(printed);
-    const bool within = r.relError <= r.tolerance;
-    if (knownMisprint) {
-        r.status = within ? "fail" : "flagged";
-        r.note = misprintNote;
-    } else {
-        r.status = within ? "pass" : "fail";
-        r.note = "printed value vs the oracle with the printed t_v; tolerance half a unit in the last printed digit";
-    }
-    return r;
+    return milldyn::paperRow(name, quantity, unit, printed, oracle, halfUnit / std::abs(printed),
+                             knownMisprint ? RowPolicy::Misprint : RowPolicy::Judged,
+                             knownMisprint ? misprintNote
+                                           : "printed value vs the oracle with the printed t_v; tolerance half a "
+                                             "unit in the last printed digit");
 }
 
 /// (b) One row of Table 1.

@@ -85,10 +85,7 @@ oc::DqSupply supplyOf(const ModelSpec& spec) {
 
 ValidationRow worstRow(const std::string& caseName, const std::string& quantity, const std::string& unit,
                        double model, double oracle, double rel, double tolerance, const std::string& note) {
-    ValidationRow row = compareRow(caseName, quantity, unit, model, oracle, tolerance, note);
-    row.relError = rel;
-    row.status = rel <= tolerance ? "pass" : "fail";
-    return row;
+    return withError(compareRow(caseName, quantity, unit, model, oracle, tolerance, note), rel);
 }
 
 void balanceRow(const std::string& name, const AnalysisResult& r, std::vector<ValidationRow>& rows) {
@@ -286,9 +283,7 @@ void mslDescriptionCase(std::vector<ValidationRow>& rows) {
                                    "161.4 N*m and 1440.45 rpm");
     row.multibody.reset();
     row.paper = wL;
-    row.relError = std::abs(wL - o.back().speed) / o.back().speed;
-    row.status = row.relError <= tolerance ? "pass" : "fail";
-    rows.push_back(row);
+    rows.push_back(withError(row, std::abs(wL - o.back().speed) / o.back().speed));
 }
 
 

@@ -33,6 +33,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <fstream>
 #include <functional>
 #include <optional>
@@ -140,20 +141,32 @@ Eigen::Vector2d drumReaction(const AnalysisResult& r, std::size_t k) {
 
 ValidationRow judged(std::string name, std::string quantity, std::string unit, double value, double oracle,
                      double error, std::string note) {
-    ValidationRow row = compareRow(std::move(name), std::move(quantity), std::move(unit), value, oracle, kTolerance,
-                                   std::move(note));
-    row.relError = error;
-    row.status = std::isfinite(error) && error <= kTolerance ? "pass" : "fail";
-    return row;
+    return withError(compareRow(std::move(name), std::move(quantity), std::move(unit), value, oracle, kTolerance,
+                                std::move(note)),
+                     error);
 }
 
-ValidationRow info(std::string name, std::string quantity, std::string unit, double value, double oracle,
-                   std::string note, std::optional<double> paper = std::nullopt) {
-    ValidationRow row = compareRow(std::move(name), std::move(quantity), std::move(unit), value, oracle, 0.0,
-                                   std::move(note));
+/// The model against (15)-(18) as printed (or the paper's printed value in
+/// `paper`): the printed equations carry the errors A5-A7 of
+/// docs/oracles/planetary_belt.md, so the two must differ beyond the
+/// judged tolerance; a printed form that agrees fails (the explanation would
+/// be wrong). The model itself is judged against the rebuilt oracle in the
+/// neighbouring rows.
+ValidationRow printedForm(std::string name, std::string quantity, std::string unit, double value, double printedEqs,
+                          std::string note, std::optional<double> paper = std::nullopt) {
+    ValidationRow row = compareRow(std::move(name), std::move(quantity), std::move(unit), value, printedEqs,
+                                   kTolerance, std::move(note));
     row.paper = paper;
-    row.status = "flagged";
-    return row;
+    return asMisprint(row);
+}
+
+/// A value reported beside a reference it is not meant to equal, expected
+/// in `band` (RowPolicy::Observation).
+ValidationRow observed(std::string name, std::string quantity, std::string unit, double value, double oracle,
+                       std::string note, ExpectedBand band) {
+    return asObservation(compareRow(std::move(name), std::move(quantity), std::move(unit), value, oracle, 0.0,
+                                    std::move(note)),
+                         std::move(band));
 }
 
 /// Over one kinetostatic turn: worst vector error of R_A against the
@@ -213,7 +226,7 @@ void turnCases(const std::string& filter, std::vector<ValidationRow>& rows) {
                               t.worstTension, note));
         rows.push_back(compareRow(name, "R_A,max over the turn", "N", t.modelMax, t.oracleMax, kTolerance, note));
         rows.push_back(compareRow(name, "R_A,min over the turn", "N", t.modelMin, t.oracleMin, kTolerance, note));
-        rows.push_back(info(name, "R_A,max: model vs (15)-(18) as printed (Φ_c)", "N", t.modelMax, t.paperMax,
+        rows.push_back(printedForm(name, "R_A,max: model vs (15)-(18) as printed (Φ_c)", "N", t.modelMax, t.paperMax,
                             "differs by A5-A7 of docs/oracles/planetary_belt.md (gravity arm sin(φ+α), Ω² vs ω² "
                             "on the centroid offset, the sign of the belt term for r0 > r_A)"));
     }
@@ -282,7 +295,7 @@ void paperFormCases(const std::string& filter, std::vector<ValidationRow>& rows)
         c.moment = oc::MomentForceReading::RelativeCharge;
         const oc::PlanetaryBeltOracle literal(oracleParameters(c));
         const AnalysisResult r = weldedInstant(c, 3 * M_PI / 2);
-        rows.push_back(info(name, "T2 at φ = 270°, model vs (15) with Φ_r", "N", r.value(0, "belt1.tension_slack"),
+        rows.push_back(printedForm(name, "T2 at φ = 270°, model vs (15) with Φ_r", "N", r.value(0, "belt1.tension_slack"),
                             literal.calcPaperReaction(3 * M_PI / 2).slackTension,
                             "Φ_r acts along A→C and has no moment about A; every physical model gives the Φ_c "
                             "moment, so the Φ_r reading cannot be reproduced (and gives T2 < 0 on part of the turn)"));
@@ -307,22 +320,16 @@ void cToOneCases(const std::string& filter, std::vector<ValidationRow>& rows) {
         const double expected = oracle.getKinematics().drumRate;
         ValidationRow w = compareRow(name, tag + ": drum absolute speed ω = Ω(1 − r0/r_A)", "rad/s", omega, expected,
                                      kTolerance, "absolute error judged against Ω");
-        w.relError = std::abs(omega - expected) / c.rate;
-        w.status = w.relError <= kTolerance ? "pass" : "fail";
-        rows.push_back(w);
+        rows.push_back(withError(w, std::abs(omega - expected) / c.rate));
         const double turns = r.value(0, "belt1.drum_turns");
         ValidationRow flag = compareRow(name, tag + ": drum_turns flag (0: translates, l_AD = ∞)", "1", turns,
                                         oracle.getKinematics().hasInstantaneousCentre ? 1.0 : 0.0, 0.0);
-        flag.relError = std::abs(turns - flag.oracle);
-        flag.status = flag.relError == 0 ? "pass" : "fail";
-        rows.push_back(flag);
+        rows.push_back(withError(flag, std::abs(turns - flag.oracle)));
         const double inv = r.value(0, "belt1.inverse_centre_offset");
         ValidationRow io = compareRow(name, tag + ": 1/l_AD (4), finite form", "1/m", inv,
                                       oracle.getKinematics().inverseCentreOffset, kTolerance,
                                       "absolute error judged against 1/l_OA");
-        io.relError = std::abs(inv - io.oracle) * oracle.getParameters().geometry.carrierArm;
-        io.status = io.relError <= kTolerance ? "pass" : "fail";
-        rows.push_back(io);
+        rows.push_back(withError(io, std::abs(inv - io.oracle) * oracle.getParameters().geometry.carrierArm));
     }
 }
 
@@ -332,26 +339,26 @@ void fig3Cases(const std::string& filter, std::vector<ValidationRow>& rows) {
     BeltCase base;
     const TurnComparison t = compareTurn(base, 73);
     const oc::PlanetaryBeltOracle oracle(oracleParameters(base));
-    rows.push_back(info(name, "R_A,max (model; printed 82 kN)", "N", t.modelMax, t.paperMax,
-                        "oracle column: (15)-(18) as printed, Φ_c, α = 50°", 82e3));
-    rows.push_back(info(name, "R_A,min (model; printed 73 kN)", "N", t.modelMin, t.paperMin,
-                        "oracle column: (15)-(18) as printed", 73e3));
-    rows.push_back(info(name, "swing R_A,max − R_A,min (printed 9 kN)", "N", t.modelMax - t.modelMin,
-                        t.paperMax - t.paperMin, "the weights bound the swing; see the next row", 9e3));
-    rows.push_back(info(name, "carrier angle of R_A,max (printed ≈ 330°)", "deg", t.angleAtMax * 180 / M_PI,
-                        oracle.calcPaperReactionExtremes().angleAtMax * 180 / M_PI,
-                        "oracle column: (15)-(18) as printed", 330));
+    rows.push_back(printedForm(name, "R_A,max (model; printed 82 kN)", "N", t.modelMax, t.paperMax,
+                               "oracle column: (15)-(18) as printed, Φ_c, α = 50°", 82e3));
+    rows.push_back(printedForm(name, "R_A,min (model; printed 73 kN)", "N", t.modelMin, t.paperMin,
+                               "oracle column: (15)-(18) as printed", 73e3));
+    rows.push_back(printedForm(name, "swing R_A,max − R_A,min (printed 9 kN)", "N", t.modelMax - t.modelMin,
+                               t.paperMax - t.paperMin, "the weights bound the swing; see the next row", 9e3));
+    rows.push_back(printedForm(name, "carrier angle of R_A,max (printed ≈ 330°)", "deg", t.angleAtMax * 180 / M_PI,
+                               oracle.calcPaperReactionExtremes().angleAtMax * 180 / M_PI,
+                               "oracle column: (15)-(18) as printed", 330));
     // Physical bound: R_A is affine in (sin φ, cos φ) with weight
     // coefficients, so its swing is at most 2(G_b + G_z) + 6 G_z l_Ac/r_A.
     const double bound = 2 * (oracle.getDrumWeight() + oracle.getChargeWeight()) +
                          6 * oracle.getChargeWeight() * oracle.getChargeCentroidDistance() /
                              oracle.getParameters().geometry.drumSheaveRadius;
-    ValidationRow b = compareRow(name, "model swing within the weight bound 2(G_b+G_z) + 6 G_z l_Ac/r_A", "N",
-                                 t.modelMax - t.modelMin, bound, 0.0,
-                                 "pass when the swing is below the bound; 9 kN would need ~9x the physical weights");
-    b.relError = (t.modelMax - t.modelMin) / bound;
-    b.status = b.relError <= 1 ? "pass" : "fail";
-    rows.push_back(b);
+    // A bound: judged on swing/bound, which must not exceed 1.
+    rows.push_back(withError(compareRow(name, "model swing within the weight bound 2(G_b+G_z) + 6 G_z l_Ac/r_A", "N",
+                                        t.modelMax - t.modelMin, bound, 1.0,
+                                        "pass when the swing is below the bound; 9 kN would need ~9x the physical "
+                                        "weights"),
+                             (t.modelMax - t.modelMin) / bound));
 
     // Sensitivity to every omitted parameter: the model's R_A range.
     struct Change {
@@ -376,10 +383,11 @@ void fig3Cases(const std::string& filter, std::vector<ValidationRow>& rows) {
         const TurnComparison s = compareTurn(c, 37);
         rows.push_back(judged(name, "sensitivity " + ch.what + ": R_A error vs oracle", "1", s.worstReaction, 0.0,
                               s.worstReaction, "37 angles"));
-        rows.push_back(info(name, "sensitivity " + ch.what + ": R_A,max (oracle column: (15)-(18) as printed)", "N",
-                            s.modelMax, s.paperMax, "37 angles; base 73.35 kN (printed eqs 71.14 kN)"));
-        rows.push_back(info(name, "sensitivity " + ch.what + ": swing R_A,max − R_A,min", "N", s.modelMax - s.modelMin,
-                            s.paperMax - s.paperMin, "oracle column: (15)-(18) as printed; printed 9 kN", 9e3));
+        rows.push_back(printedForm(name, "sensitivity " + ch.what + ": R_A,max (oracle column: (15)-(18) as printed)",
+                                   "N", s.modelMax, s.paperMax, "37 angles; base 73.35 kN (printed eqs 71.14 kN)"));
+        rows.push_back(printedForm(name, "sensitivity " + ch.what + ": swing R_A,max − R_A,min", "N",
+                                   s.modelMax - s.modelMin, s.paperMax - s.paperMin,
+                                   "oracle column: (15)-(18) as printed; printed 9 kN", 9e3));
     }
 }
 
@@ -419,8 +427,8 @@ void mapCases(const std::string& filter, std::vector<ValidationRow>& rows) {
         const double printed = oc::calcPaperReactionExtremes(c.rate, c.halfAngle, c.criteria,
                                                              {kDrumRadius, c.material, c.lag, c.reading, c.moment})
                                    .max;
-        rows.push_back(info(name, planetaryBeltMapQuantity({p.map, p.value, p.label}), "N", t.modelMax, printed,
-                            "map point"));
+        rows.push_back(printedForm(name, planetaryBeltMapQuantity({p.map, p.value, p.label}), "N", t.modelMax,
+                                   printed, "map point"));
     }
 }
 
@@ -444,12 +452,27 @@ void elasticCases(const std::string& filter, std::vector<ValidationRow>& rows) {
     rows.push_back(judged(name, "max |drum torque elastic − rigid|/rigid over 37 angles", "1", worstTorque, 0.0,
                           worstTorque,
                           "the transmitted torque is fixed by the drum's equilibrium whatever the tension law"));
-    rows.push_back(info(name, "R_A,max elastic belt (oracle column: rigid T1 = 2 T2)", "N", maxElastic, maxRigid,
-                        "pretension 24.4 kN: T1 = 2 T2 at the mean torque only; elsewhere T1 + T2 = 2 T0"));
-    rows.push_back(info(name, "largest T_tight/T_slack over the turn (oracle column: e^(μθ))", "1", maxRatio,
-                        std::exp(0.77 * (M_PI - 2 * std::asin(0.05 / 0.9))), "no slip while below"));
-    rows.push_back(info(name, "smallest slack-span tension over the turn", "N", minSlack, 2 * 24.4e3 / 3,
-                        "oracle column: T0·2/3, the slack tension at T1 = 2 T2"));
+    // The two runs transmit the same torque M = (T1 − T2) r_A at each angle
+    // (the judged row above); they differ in the tension sum only, 2 T0 for
+    // the elastic belt and 3|M|/r_A for T1 = 2 T2, and each span pulls along
+    // the same line in both: R_A moves by at most |2 T0 − 3|M|/r_A|.
+    const double pretension = 24.4e3, rA = oc::PlanetaryBeltOracle(oracleParameters(c)).getParameters().geometry.drumSheaveRadius;
+    double sumShift = 0;
+    for (int k = 0; k < points; ++k)
+        sumShift = std::max(sumShift, std::abs(2 * pretension - 3 * std::abs(rigid.value(k, "belt1.drum_torque")) / rA));
+    rows.push_back(observed(name, "R_A,max elastic belt (oracle column: rigid T1 = 2 T2)", "N", maxElastic, maxRigid,
+                            "pretension 24.4 kN: T1 = 2 T2 at the mean torque only; elsewhere T1 + T2 = 2 T0",
+                            {maxRigid - sumShift, maxRigid + sumShift,
+                             "the same torque, a tension sum of 2 T0 instead of 3|M|/r_A: R_A moves by at most "
+                             "max |2 T0 − 3|M|/r_A| over the turn"}));
+    const double grip = std::exp(0.77 * (M_PI - 2 * std::asin(0.05 / 0.9)));
+    rows.push_back(observed(name, "largest T_tight/T_slack over the turn (oracle column: e^(μθ))", "1", maxRatio, grip,
+                            "no slip while below",
+                            {1.0, grip, "T_tight ≥ T_slack, and a belt that grips holds at most e^(μθ)"}));
+    rows.push_back(observed(name, "smallest slack-span tension over the turn", "N", minSlack, 2 * pretension / 3,
+                            "oracle column: T0·2/3, the slack tension at T1 = 2 T2",
+                            {2 * pretension / (1 + grip), pretension,
+                             "T1 + T2 = 2 T0 and T1 ≤ e^(μθ) T2: T_slack in [2 T0/(1 + e^(μθ)), T0], never slack"}));
 }
 
 void startUpCases(const std::string& filter, std::vector<ValidationRow>& rows) {
@@ -500,18 +523,37 @@ void startUpCases(const std::string& filter, std::vector<ValidationRow>& rows) {
                                   "potential energy and dissipated power against its forces"));
     const std::string note = "elastic belt, charge dragged by the wall; start ε = ε0 e^(−t), ω(4.6 s) = 30 rad/s, "
                              "8 s; oracle column: kinetostatics at the same instants";
-    rows.push_back(info(name, "peak R_A over the start", "N", peakR, peakKinR, note));
-    rows.push_back(info(name, "largest R_A dynamic/kinetostatic (at t = " + num(std::round(tWorst * 1000) / 1000) +
-                              " s)",
-                        "1", worstRatio, 1.0, note + "; every 20 ms"));
-    rows.push_back(info(name, "peak tight-span tension", "N", peakTight, peakKinTight, note));
-    rows.push_back(info(name, "largest T_tight dynamic/kinetostatic", "1", worstTightRatio, 1.0,
-                        note + "; every 20 ms"));
-    rows.push_back(info(name, "smallest slack-span tension (0: the span went slack)", "N", minSlack, minKinSlack,
-                        note));
-    rows.push_back(info(name, "peak belt slip speed", "m/s", peakSlip, 0.0, "0: the belt never slipped"));
-    rows.push_back(info(name, "largest |R_A dynamic − kinetostatic|", "N", worstDiff, 0.0, note + "; every 20 ms"));
-    rows.back().relError = worstDiff / peakKinR;  // relative to the peak load
+    // The belt's own law bounds its tensions: T1 + T2 = 2 T0, and while it
+    // grips |T1 − T2|/2 ≤ y_max = T0 (E − 1)/(E + 1) (BeltDrive, stick), so
+    // each span stays in [2 T0/(1 + E), 2 T0 E/(1 + E)].
+    const double pretension = 24.4e3;
+    const double gripV = run.value(0, "belt1.grip_ratio");
+    const double lowSpan = 2 * pretension / (1 + gripV), highSpan = 2 * pretension * gripV / (1 + gripV);
+    const std::string spanWhy = "T1 + T2 = 2 T0 and |T1 − T2|/2 ≤ T0 (E − 1)/(E + 1), E = " + num(gripV);
+    // The R_A comparisons (dynamic vs kinetostatic at the same instant) have
+    // no band derived yet: they also differ by the dragged charge's lag rate,
+    // which the held kinetostatic charge lacks. Reported with an open band:
+    // they fail only on a value that is no number (docs/validation.md).
+    const ExpectedBand openBand{-INFINITY, INFINITY, "no band derived yet (the charge's lag rate); finite only"};
+    rows.push_back(observed(name, "peak R_A over the start", "N", peakR, peakKinR, note, openBand));
+    rows.push_back(observed(name,
+                            "largest R_A dynamic/kinetostatic (at t = " + num(std::round(tWorst * 1000) / 1000) + " s)",
+                            "1", worstRatio, 1.0, note + "; every 20 ms", openBand));
+    rows.push_back(observed(name, "peak tight-span tension", "N", peakTight, peakKinTight, note,
+                            {pretension, highSpan, spanWhy}));
+    rows.push_back(observed(name, "largest T_tight dynamic/kinetostatic", "1", worstTightRatio, 1.0,
+                            note + "; every 20 ms",
+                            {pretension / highSpan, highSpan / pretension,
+                             "both tight spans lie in [T0, 2 T0 E/(1 + E)]"}));
+    rows.push_back(observed(name, "smallest slack-span tension (0: the span went slack)", "N", minSlack, minKinSlack,
+                            note, {lowSpan, pretension, spanWhy}));
+    rows.push_back(observed(name, "peak belt slip speed", "m/s", peakSlip, 0.0, "0: the belt never slipped",
+                            {0.0, 0.0,
+                             "the span force stays below the grip cap (E = " + num(gripV) +
+                                 " against the 2 the paper's T1 = 2 T2 needs): stick, s' = 0 exactly"}));
+    rows.push_back(observed(name, "largest |R_A dynamic − kinetostatic|", "N", worstDiff, 0.0, note + "; every 20 ms",
+                            openBand));
+    rows.back() = withError(rows.back(), worstDiff / peakKinR);  // relative to the peak load
     // A flat belt (μ = 0.22, e^(μθ) = 1.95) cannot hold the paper's T1 = 2 T2:
     // does it slip during the start, and does its slack span go slack?
     const AnalysisResult flat = runAnalysis(modelFor(c, "elastic",
@@ -527,15 +569,30 @@ void startUpCases(const std::string& filter, std::vector<ValidationRow>& rows) {
     }
     const double grip = flat.value(0, "belt1.grip_ratio");
     const std::string flatNote = "flat belt μ = 0.22, grip e^(μθ) = " + num(grip);
-    rows.push_back(info(name, "flat belt: peak slip speed (first slip at t = " + num(flatFirstSlip) + " s)", "m/s",
-                        flatSlip, 0.0, flatNote));
-    rows.push_back(info(name, "flat belt: accumulated slip at the end", "m", flat.value(flat.rows.size() - 1, "belt1.slip"),
-                        0.0, flatNote));
-    rows.push_back(info(name, "flat belt: smallest slack-span tension", "N", flatSlack, 2 * 24.4e3 / (1 + grip),
-                        flatNote + "; oracle column: 2 T0/(1 + e^(μθ)), the floor while slipping"));
+    rows.push_back(observed(name, "flat belt: peak slip speed (first slip at t = " + num(flatFirstSlip) + " s)", "m/s",
+                            flatSlip, 0.0, flatNote,
+                            {std::numeric_limits<double>::min(), INFINITY,
+                             "a grip of " + num(grip) + " < 2 cannot hold T1 = 2 T2: the belt must slip"}));
+    rows.push_back(observed(name, "flat belt: accumulated slip at the end", "m",
+                            flat.value(flat.rows.size() - 1, "belt1.slip"), 0.0, flatNote,
+                            {-flatSlip * flat.rows.back()[0], flatSlip * flat.rows.back()[0],
+                             "at most the peak slip speed times the run's length"}));
+    rows.push_back(observed(name, "flat belt: smallest slack-span tension", "N", flatSlack, 2 * pretension / (1 + grip),
+                            flatNote + "; oracle column: 2 T0/(1 + e^(μθ)), the floor while slipping",
+                            {2 * pretension / (1 + grip) * (1 - 1e-9), pretension,
+                             "T1 + T2 = 2 T0, T1 ≤ e^(μθ) T2 (round-off 1e-9 below the floor allowed)"}));
+    // Without gravity the wall drag holds the lag where the centrifugal
+    // moment m_z W² l_OA l_Ac cos α equals the drag's torque (the model file:
+    // cos α = 0.643 at W = 30 rad/s); gravity's moment m_z g l_Ac sin(·) moves
+    // cos α by at most g/(W² l_OA), and W ends between 30 and 30/(1 − e^−4.6).
     const double lag = run.value(n - 1, "charge1.lag");
-    rows.push_back(info(name, "settled lag α of the dragged charge", "deg", (M_PI - lag) * 180 / M_PI, 50.0,
-                        "oracle column: the 50° the wall drag was chosen for (without gravity)"));
+    const double arm = oc::PlanetaryBeltOracle(oracleParameters(c)).getParameters().geometry.carrierArm;
+    const double wLow = 30.0, wHigh = 30.0 / (1 - std::exp(-4.6)), cos50 = std::cos(50 * M_PI / 180);
+    const double cosHigh = cos50 + 9.80665 / (wLow * wLow * arm), cosLow = cos50 * wLow / wHigh - 9.80665 / (wLow * wLow * arm);
+    rows.push_back(observed(name, "settled lag α of the dragged charge", "deg", (M_PI - lag) * 180 / M_PI, 50.0,
+                            "oracle column: the 50° the wall drag was chosen for (without gravity)",
+                            {std::acos(cosHigh) * 180 / M_PI, std::acos(cosLow) * 180 / M_PI,
+                             "cos α = 0.643·30/W ± g/(W² l_OA), W in [30, 30/(1 − e^−4.6)] rad/s"}));
 }
 
 }  // namespace

@@ -71,8 +71,7 @@ ValidationRow compareScaled(const std::string& caseName, const std::string& quan
                             double scale, double tolerance) {
     ValidationRow r = compareRow(caseName, quantity, "N", value, oracle, tolerance,
                                  "error relative to the shaft's largest load");
-    r.relError = std::abs(value - oracle) / scale;
-    r.status = std::isfinite(r.relError) && r.relError <= tolerance ? "pass" : "fail";
+    r = withError(r, std::abs(value - oracle) / scale);
     return r;
 }
 

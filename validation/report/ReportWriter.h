@@ -7,7 +7,8 @@
 // The writer knows no machine: each ReportSection (validation/report/
 // ReportSection.h) says what its paper claims and what to plot; the writer
 // adds, from the rows, the counts, the per-case summary, the flagged
-// misprints with their notes, any failure, and every comparison.
+// misprints and the observations with their bands and notes, any failure,
+// and every comparison.
 
 #include "validation/report/ReportSection.h"
 
@@ -16,9 +17,9 @@
 
 namespace milldyn {
 
-struct ReportCounts {
-    int pass = 0, fail = 0, flagged = 0;
-};
+using ReportCounts = StatusCounts;
+/// The rows' counts by status (countStatuses: the same numbers `validate`
+/// and docs/validation.md give).
 ReportCounts countRows(const std::vector<ValidationRow>& rows);
 
 /// Writes the report into `dir` (created if needed). Sections without rows
