@@ -179,18 +179,14 @@ void frozenLift(std::vector<ValidationRow>& rows) {
     ValidationRow worstRow = compareRow(name, "charge torque vs m g r_c sin(theta), worst sample while packed", "N*m",
                                         worstTorque, oracleAtWorst, 1e-12,
                                         "error relative to m g r_c; theta the shell's turn from rest");
-    worstRow.relError = worst;
-    worstRow.status = worst <= 1e-12 ? "pass" : "fail";
-    rows.push_back(worstRow);
+    rows.push_back(withError(worstRow, worst));
     rows.push_back(compareRow(name, "angle the packed charge reached vs release_angle", "rad",
                               r.find("charge.angle_reached")->value, release, 1e-15));
     rows.push_back(compareRow(name, "energy of the fall (work of lifting) vs m g r_c (1 - cos theta_r)", "J",
                               r.find("energy.charge")->value, oc::frozenFallEnergy(m, rc, release, g), kFallEnergyTolerance,
                               "the lifting work the drive did on the block, integrated"));
     ValidationRow after = compareRow(name, "largest charge torque after the release vs 0", "N*m", largestAfter, 0, 0);
-    after.relError = largestAfter;
-    after.status = largestAfter == 0 ? "pass" : "fail";
-    rows.push_back(after);
+    rows.push_back(withError(after, largestAfter));
 }
 
 }  // namespace

@@ -200,9 +200,7 @@ void bevelRows(std::vector<ValidationRow>& rows, const std::string& name, const 
     auto row = [&](const std::string& what, const std::string& probe, double oracle) {
         ValidationRow r = compareRow(name, what, "N", st.probe.at(element + "." + probe), oracle, tol,
                                      "error relative to W_t");
-        r.relError = std::abs(st.probe.at(element + "." + probe) - oracle) / o.tangential;
-        r.status = r.relError <= tol ? "pass" : "fail";
-        rows.push_back(r);
+        rows.push_back(withError(r, std::abs(st.probe.at(element + "." + probe) - oracle) / o.tangential));
     };
     row("tangential force", "tangential_force", o.tangential);
     row("pinion thrust", "pinion_axial_force", o.pinionThrust);
