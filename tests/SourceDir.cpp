@@ -1,0 +1,3 @@
+#include "tests/SourceDir.h"
+
+const char* milldyn::test::sourceDir() { return MILLDYN_SOURCE_DIR_PATH; }
