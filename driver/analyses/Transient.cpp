@@ -361,8 +361,18 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         peakDrive.step(sim, s);
         for (auto& p : peaks)
             if (p) p->step(sim, s);
+        // A sequence's end located inside the step (bisection on the
+        // trajectory: a ramp ends at its time, not at the next step end).
         for (std::size_t i = 0; i < sequences.size(); ++i)
-            if (!sequenceEnd[i] && sequences[i].state(s).finished) sequenceEnd[i] = t;
+            if (!sequenceEnd[i] && sequences[i].state(s).finished) {
+                double a = sim.trajectoryFrom(), b = t;
+                if (a < b && !sequences[i].state(sim.trajectoryAt(a)).finished)
+                    for (int k = 0; k < 60 && b - a > 1e-12 * std::max(1.0, b); ++k) {
+                        const double c = 0.5 * (a + b);
+                        (sequences[i].state(sim.trajectoryAt(c)).finished ? b : a) = c;
+                    }
+                sequenceEnd[i] = b;
+            }
         // The power split's window starts exactly at tWindowStart (a state
         // on the trajectory, not the first sample after it).
         if (!windowCopied && t >= tWindowStart && tWindowStart <= switchTime) {
@@ -466,7 +476,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         for (std::size_t i = 0; i < sequences.size(); ++i)
             if (sequenceEnd[i])
                 result.results.push_back({"sequence_end." + sequences[i].name, *sequenceEnd[i], "s",
-                                          "first integration step end at which " + sequences[i].name +
+                                          "instant at which " + sequences[i].name +
                                               "'s starting sequence had finished (starter out of circuit, clutch "
                                               "engaged and locked)"});
     if (start == "rest" && reached && omega != 0) {
