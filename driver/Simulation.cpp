@@ -41,6 +41,9 @@ constexpr std::size_t kInstantHistory = 6;
 constexpr double kInstantMargin = 0.1;
 // Fixed-step integrators need a step; used when max_step is not given [s].
 constexpr double kDefaultFixedStep = 1e-4;
+// A replay's placements over its run, besides the samples (energy
+// integrals by the trapezoid rule over them: independent of the sampling).
+constexpr double kReplayPlacements = 4000;
 
 /// Cubic Hermite interpolation between two step ends (values y, derivatives
 /// f), the same order as Simbody's own interpolation of report times.
@@ -578,16 +581,38 @@ void Simulation::placeReplay(double t) {
     ++m_extra.steps;
 }
 
-std::optional<double> Simulation::runReplay(double endTime, double sampleInterval, const SampleFn& onSample) {
+std::optional<double> Simulation::runReplay(double endTime, double sampleInterval, const SampleFn& onSample,
+                                            const SampleFn& onStep) {
     const double t0 = m_replayState.getTime();
+    // The placements: a grid of its own (max_step, else kReplayPlacements
+    // over the run) merged with the sample times, so the energy integrals'
+    // trapezoid rule and the design loads do not depend on the sampling.
+    const double span = endTime - t0;
+    const double h = m_settings.maxStep > 0 ? std::min(m_settings.maxStep, span / kReplayPlacements)
+                                            : span / kReplayPlacements;
     auto emit = [&]() {
         evaluateAndCheck(m_replayState);
         if (onSample) onSample(m_replayState);
     };
+    auto step = [&](bool restart) {
+        if (!onStep) return;
+        pushStepEnd(m_replayState, restart);
+        onStep(m_replayState);
+    };
     emit();
-    for (long k = 1; m_replayState.getTime() < endTime; ++k) {
-        placeReplay(std::min(t0 + k * sampleInterval, endTime));
-        emit();
+    step(true);
+    long k = 1, j = 1;
+    while (m_replayState.getTime() < endTime && span > 0) {
+        const double tSample = std::min(t0 + k * sampleInterval, endTime);
+        const double tGrid = std::min(t0 + j * h, endTime);
+        const double t = std::min(tSample, tGrid);
+        const double tol = 1e-12 * std::max(1.0, std::abs(t));
+        placeReplay(t);
+        if (tGrid <= t + tol) ++j;
+        const bool atSample = tSample <= t + tol;
+        if (atSample) ++k;
+        if (atSample) emit();
+        step(false);
     }
     return std::nullopt;
 }
@@ -626,12 +651,49 @@ void Simulation::evaluateAndCheck(const SimTK::State& state) {
     }
 }
 
+void Simulation::pushStepEnd(const SimTK::State& s, bool restart) {
+    if (restart) {
+        m_ends.clear();
+        m_within = s;  // one State copy per run and switching: discrete variables and structure
+        m_haveWithin = true;
+    }
+    if (m_ends.size() == 3) m_ends.erase(m_ends.begin());
+    m_ends.push_back({s.getTime(), s.getY(), s.getYDot()});
+}
+
+const SimTK::State& Simulation::trajectoryAt(double t) {
+    if (m_ends.empty() || !m_haveWithin) throw AnalysisError("internal: trajectoryAt outside a step");
+    const SimTK::MultibodySystem& system = m_scene.system();
+    t = std::max(m_ends.front().t, std::min(t, m_ends.back().t));
+    std::size_t k = 1;
+    while (k + 1 < m_ends.size() && m_ends[k].t < t) ++k;
+    const SimTK::State& now = m_replay ? m_replayState : m_integrator->getState();
+    copyDiscreteVariables(now, m_within);
+    if (m_ends.size() == 1 || m_ends[k].t <= m_ends[k - 1].t) {
+        m_within.updY() = m_ends.back().y;
+        m_within.setTime(m_ends.back().t);
+    } else {
+        const StepEnd &a = m_ends[k - 1], &b = m_ends[k];
+        interpolateHermite(a.t, a.y, a.ydot, b.t, b.y, b.ydot, t, m_within.updY());
+        m_within.setTime(t);
+    }
+    // As Simbody's own interpolated states: prescribed motion re-applied
+    // (the interpolant of a prescribed q is close to, not on, its law).
+    system.realize(m_within, SimTK::Stage::Time);
+    system.prescribeQ(m_within);
+    system.realize(m_within, SimTK::Stage::Position);
+    system.prescribeU(m_within);
+    system.realize(m_within, SimTK::Stage::Acceleration);
+    return m_within;
+}
+
 std::optional<double> Simulation::run(double endTime, double sampleInterval, const SampleFn& onSample,
-                                      const Watch* watch) {
+                                      const Watch* watch, const SampleFn& onStep) {
+    m_ends.clear();
     if (m_replay) {
         // A watch needs a switch-off first, and switchings rule out a replay.
         if (watch) throw AnalysisError("internal: a watched run cannot be a replay");
-        return runReplay(endTime, sampleInterval, onSample);
+        return runReplay(endTime, sampleInterval, onSample, onStep);
     }
     SimTK::Integrator& integ = *m_integrator;
     const SimTK::System& system = m_scene.system();
@@ -646,6 +708,14 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         if (onSample) onSample(s);
     };
     emit(integ.getState());
+    // A step end of the trajectory (the state realized to Acceleration).
+    auto step = [&](const SimTK::State& st, bool restart) {
+        if (!onStep) return;
+        system.realize(st, SimTK::Stage::Acceleration);
+        pushStepEnd(st, restart);
+        onStep(st);
+    };
+    step(integ.getState(), true);
     if (endTime <= t0) return std::nullopt;
 
     std::vector<double> switchTimes;
@@ -752,6 +822,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
                 const SimTK::State& crossing = m_crossingSample;
                 if (own) emitInterpolated(crossing.getTime());
                 emit(crossing);
+                step(crossing, false);
                 m_lastSampleIsCrossing = true;
                 const double rate = watch->rate(crossing);
                 if (!(rate < 0))
@@ -767,6 +838,9 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         if (!integ.isStateInterpolated()) {
             makeLaggedValuesConsistent();  // may restart: s then is the consistent state
             if (watch && mayWatchNext(integ.getState())) rememberWatchStart(integ.getState());
+            // A step end past a hard stop (CPodes steps past and interpolates
+            // back) is not on the trajectory: the switch applies before it.
+            if (s.getTime() <= hardStop) step(s, false);
         }
 
         const double t = s.getTime();
@@ -788,6 +862,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             accumulateStatistics();
             integ.initialize(restart);
             integ.resetAllStatistics();
+            step(integ.getState(), true);
             if (watch) {
                 lastStepEnd = integ.getState();
                 lastWatch = watched(lastStepEnd);
@@ -885,7 +960,19 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
     for (const auto& b : scene.bodies()) b.mobod.setOneU(state, SimTK::MobilizerUIndex(0), hints.at(b.name));
     const double heldAngle = nq > 0 ? state.getQ()[0] : 0;
     const auto& residuals = scene.steadyResiduals();
-    const int nr = nu + static_cast<int>(residuals.size()) + (nq > 0 ? 1 : 0);
+    // The constraints' position and velocity errors are residuals too: an
+    // acceleration-level solution whose q, u leave a constraint (a planet's
+    // rolling on its carrier) is not a state the integrator can start from;
+    // its projection would move the speeds and twists (issue 26 item 6).
+    int nQErr = 0, nUErr = 0;
+    {
+        SimTK::State s = state;
+        system.realize(s, SimTK::Stage::Velocity);
+        nQErr = s.getNQErr();
+        nUErr = s.getNUErr();
+    }
+    const int nc = nQErr + nUErr;
+    const int nr = nu + static_cast<int>(residuals.size()) + nc + (nq > 0 ? 1 : 0);
     const int nx = nq + nu;
 
     auto setX = [&](SimTK::State& s, const Eigen::VectorXd& x) {
@@ -905,6 +992,9 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
         Eigen::VectorXd r(nr);
         for (int i = 0; i < nu; ++i) r[i] = s.getUDot()[i];
         for (std::size_t k = 0; k < residuals.size(); ++k) r[nu + k] = residuals[k].value(s);
+        const int c0 = nu + static_cast<int>(residuals.size());
+        for (int i = 0; i < nQErr; ++i) r[c0 + i] = s.getQErr()[i];
+        for (int i = 0; i < nUErr; ++i) r[c0 + nQErr + i] = s.getUErr()[i];
         if (nq > 0) r[nr - 1] = s.getQ()[0] - heldAngle;
         return r;
     };
@@ -943,10 +1033,11 @@ SimTK::State solveSteadyState(const Scene& scene, const SimTK::State& guess) {
     if (!r.allFinite() || r.cwiseAbs().maxCoeff() > 1e-8 * speedScale) {
         Eigen::Index worst = 0;
         r.cwiseAbs().maxCoeff(&worst);
-        std::string where = worst < nu ? "acceleration of " + mobilityNames(scene, state)[worst]
-                            : worst < nu + static_cast<Eigen::Index>(residuals.size())
-                                ? residuals[worst - nu].name
-                                : "held angle";
+        const Eigen::Index nres = static_cast<Eigen::Index>(residuals.size());
+        std::string where = worst < nu          ? "acceleration of " + mobilityNames(scene, state)[worst]
+                            : worst < nu + nres ? residuals[worst - nu].name
+                            : worst < nu + nres + nc ? "a constraint's error (a gear mesh or rolling contact)"
+                                                     : "held angle";
         throw AnalysisError("no steady running state found: residual " + std::to_string(r.cwiseAbs().maxCoeff()) +
                             " in " + where + " (does the drive overcome the load?)");
     }

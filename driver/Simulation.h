@@ -132,9 +132,25 @@ public:
     /// realized to Acceleration. Applies the scene's switch events. With a
     /// watch, stops at the threshold crossing (the last sample) and returns
     /// the extrapolated time of zero; otherwise returns nullopt.
+    /// onStep sees the integrated trajectory itself, whatever the sampling:
+    /// the start, every accepted step end, the state just after each
+    /// switching (same time, new switch state) and a located crossing, each
+    /// realized to Acceleration; during the call trajectoryAt() gives the
+    /// trajectory anywhere in the last two steps (design loads, verdicts and
+    /// crossings are judged from it, never from the samples).
     /// Throws AnalysisError if the integrator fails or a sample is not finite.
     std::optional<double> run(double endTime, double sampleInterval, const SampleFn& onSample,
-                              const Watch* watch = nullptr);
+                              const Watch* watch = nullptr, const SampleFn& onStep = {});
+
+    /// During onStep: the earliest time trajectoryAt() can give (the start
+    /// of the step before the current one, or the last switching).
+    double trajectoryFrom() const { return m_ends.empty() ? 0 : m_ends.front().t; }
+    /// During onStep: the state at time t in [trajectoryFrom(), the current
+    /// step end], interpolated by the integrator's own interpolant (cubic
+    /// Hermite from the step ends' y and ẏ; prescribed motion re-applied),
+    /// realized to Acceleration, with the current step end's discrete
+    /// variables. A replay places the state at t exactly.
+    const SimTK::State& trajectoryAt(double t);
 
     const SimTK::State& state() const;
     /// The state of the last onSample call of the last run() (realized to
@@ -155,6 +171,18 @@ private:
     bool m_lastSampleIsCrossing = false;
     bool m_sampleByHermite = false;  // see initialize()
     SimTK::State m_sample;           // the interpolated sample (own sampling)
+    // The last (up to three) step ends since the last restart, for
+    // trajectoryAt(): time, y and ẏ.
+    struct StepEnd {
+        double t = 0;
+        SimTK::Vector y, ydot;
+    };
+    std::vector<StepEnd> m_ends;
+    SimTK::State m_within;           // trajectoryAt()'s state
+    bool m_haveWithin = false;
+    /// Records the state (realized to Acceleration) as a step end; `restart`
+    /// forgets the earlier ones (a switching: no interpolation across it).
+    void pushStepEnd(const SimTK::State& s, bool restart);
     std::vector<double> m_probeValues;
 
     /// Fills m_probeValues; throws AnalysisError naming the body or element
@@ -178,7 +206,8 @@ private:
     /// Places m_replayState at time t (energy integrals advanced by the
     /// trapezoid rule from the previous placement), realized to Acceleration.
     void placeReplay(double t);
-    std::optional<double> runReplay(double endTime, double sampleInterval, const SampleFn& onSample);
+    std::optional<double> runReplay(double endTime, double sampleInterval, const SampleFn& onSample,
+                                    const SampleFn& onStep);
 };
 
 /// Empty if a transient of `scene` from `start` can be replayed (see

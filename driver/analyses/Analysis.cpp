@@ -384,6 +384,24 @@ std::string probeShaft(const ModelSpec& spec, const std::string& probeName) {
     return "";
 }
 
+std::string elementsOnBody(const ModelSpec& spec, const std::string& body) {
+    std::string out;
+    for (const ElementSpec& e : spec.elements) {
+        const ElementType* type = ElementRegistry::instance().find(e.type);
+        if (!type) continue;
+        bool on = false;
+        for (const auto& p : type->schema.params) {
+            const auto v = e.params.find(p.key);
+            if (v == e.params.end()) continue;
+            if (p.kind == ParamKind::BodyRef) on = on || v->second.text == body;
+            if (p.kind == ParamKind::BodyPair || p.kind == ParamKind::BodyList)
+                on = on || std::find(v->second.names.begin(), v->second.names.end(), body) != v->second.names.end();
+        }
+        if (on) out += (out.empty() ? "" : ", ") + e.name;
+    }
+    return out;
+}
+
 std::string probeShafts(const ModelSpec& spec, const Scene& scene, ProbeRole role) {
     std::vector<std::string> distinct;
     for (const auto& p : scene.probes()) {
@@ -417,8 +435,12 @@ void checkStopSpeed(const ModelSpec& spec) {
 Simulation::Watch speedWatch(const SimTK::MobilizedBody& body, double threshold, double notBefore,
                              const std::string& what) {
     Simulation::Watch w;
-    w.value = [body](const SimTK::State& s) { return pinSpeed(s, body); };
-    w.rate = [body](const SimTK::State& s) { return body.getOneUDot(s, SimTK::MobilizerUIndex(0)); };
+    // |ω| falls to the threshold whichever way the shaft turns (a wheel
+    // behind one external gear stage turns against its motor).
+    w.value = [body](const SimTK::State& s) { return std::abs(pinSpeed(s, body)); };
+    w.rate = [body](const SimTK::State& s) {
+        return (pinSpeed(s, body) < 0 ? -1.0 : 1.0) * body.getOneUDot(s, SimTK::MobilizerUIndex(0));
+    };
     w.threshold = threshold;
     w.notBefore = notBefore;
     w.what = what;

@@ -125,6 +125,9 @@ std::vector<ResultScalar> derivedResults(const Scene& scene);
 /// shaft, a gear pair's gear 1), or every body of a body list (comma-
 /// separated). Empty for a probe that is not ELEMENT.x of a model element.
 std::string probeShaft(const ModelSpec& spec, const std::string& probeName);
+/// The model's elements that act on `body` (any of their body keys names
+/// it), comma-separated; empty if none.
+std::string elementsOnBody(const ModelSpec& spec, const std::string& body);
 /// The distinct shafts of every probe with this role, comma-separated.
 std::string probeShafts(const ModelSpec& spec, const Scene& scene, ProbeRole role);
 

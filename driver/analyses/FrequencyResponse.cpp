@@ -238,6 +238,20 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
         // interpolant's error far below the integration accuracy.
         IntegratorSpec integrator = checkSpec.integrator;
         integrator.maxStep = integrator.maxStep > 0 ? std::min(integrator.maxStep, period / 50) : period / 50;
+        // A scheduled switching (a motor switched off, a load switched on,
+        // a starter's step) inside the simulated span changes the operating
+        // point the linear model is taken about: the comparison then
+        // measures the event, not the linearization. Said, not hidden.
+        for (const auto& ev : checkScene->switchEvents())
+            if (ev.time > start.getTime() && ev.time <= start.getTime() + tFit + fitTime) {
+                std::ostringstream why;
+                why << "time check at " << P << " rad/s: its run (" << start.getTime() << " to "
+                    << start.getTime() + tFit + fitTime << " s, fit window from " << start.getTime() + tFit
+                    << " s) crosses the scheduled event " << ev.what << " at " << ev.time
+                    << " s, which the linear model about steady running does not have; its differences measure "
+                       "that event, not the linearization";
+                result.notes.push_back(why.str());
+            }
         Simulation sim(*checkScene, integrator);
         sim.initialize(start);
         std::vector<double> ts;

@@ -4,6 +4,7 @@
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/analyses/MotorReports.h"
+#include "driver/analyses/Trajectory.h"
 #include "plugins/loads/BreakawayResistance.h"
 #include "plugins/scene/Format.h"
 
@@ -36,78 +37,71 @@ std::string fmt(double v) { return formatNumber(v, 4); }
 /// Whether speed_body held its speed over the last hold window before the
 /// first switch-off (or the end), with the numbers the verdicts quote.
 struct HoldCheck {
-    bool valid = false;  ///< there were samples in the window
+    bool valid = false;  ///< the trajectory reached the window
     bool held = false;
     bool stillRising = false;
     double tStart = 0, tEnd = 0, wStart = 0, wEnd = 0, wRef = 0, band = 0, hold = 0, worst = 0, tol = 0;
+    /// +1 or −1: the way the drive turns speed_body (the sign of its hinted
+    /// running speed, referred through the train's signed ratios; without a
+    /// hint, the way it turned at the end). Progress is direction·ω.
+    double direction = 1;
     bool hinted = false;
     std::string holdText;  ///< "within ±… rad/s (… % of ω_ref) for the last … s before …"
 };
 
 /**
- * The speed is *held* when every sample of the last hold_time of the start
- * window (the samples up to the first switch-off) lies within
- * start_tolerance·ω_ref of the window's last speed ω_e, and its mean drift
- * over that time, continued for another hold_time, would not leave that
- * band. The reference speed ω_ref is the drives' rated speed referred to
- * speed_body (Scene::speedHints; the final speed if no drive hints one).
+ * The speed is *held* when, over the last hold_time of the start window
+ * (up to the first switch-off), the integrated speed ω(t) — every step, with
+ * its interpolant's extremes between them, not the output rows — stays
+ * within start_tolerance·ω_ref of the window's last speed ω_e, and its mean
+ * drift over that time, continued for another hold_time, would not leave
+ * that band. The reference speed ω_ref is |the drives' running speed
+ * referred to speed_body| (Scene::speedHints, signed through every ratio;
+ * the final speed if no drive hints one).
  */
-HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& body, std::size_t col,
-                    double switchTime, const AnalysisResult& result) {
+HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& body, const SpeedTrace& trace,
+                    double switchTime) {
     const ElementSpec& sc = spec.scenario;
     HoldCheck h;
-    std::vector<const std::vector<double>*> window;
-    for (const auto& row : result.rows)
-        if (row[0] <= switchTime) window.push_back(&row);
-    if (window.empty()) return h;
+    if (trace.empty()) return h;
     h.valid = true;
-    h.tStart = window.front()->at(0);
-    h.wStart = window.front()->at(col);
-    h.tEnd = window.back()->at(0);
-    h.wEnd = window.back()->at(col);
+    h.tStart = trace.startTime();
+    h.tEnd = std::min(switchTime, trace.endTime());
+    h.wStart = trace.at(h.tStart);
+    h.wEnd = trace.at(h.tEnd);
     const auto hints = scene.speedHints();
     const auto hint = hints.find(body.name);
-    h.hinted = hint != hints.end() && hint->second > 0;
+    h.hinted = hint != hints.end() && std::isfinite(hint->second) && hint->second != 0;
     // No rated speed hinted: the larger of the window's first and last
     // speeds (a start's final speed; a run-out's initial one).
-    h.wRef = h.hinted ? hint->second : std::max(std::abs(h.wEnd), std::abs(h.wStart));
+    h.wRef = h.hinted ? std::abs(hint->second) : std::max(std::abs(h.wEnd), std::abs(h.wStart));
+    h.direction = h.hinted ? (hint->second > 0 ? 1.0 : -1.0) : (h.wEnd < 0 ? -1.0 : 1.0);
     h.tol = sc.number("start_tolerance");
     h.hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (h.tEnd - h.tStart);
     h.band = h.tol * h.wRef;
-    bool held = h.tStart <= h.tEnd - h.hold && h.wRef > 0;
-    for (const auto* row : window)
-        if (row->at(0) >= h.tEnd - h.hold) h.worst = std::max(h.worst, std::abs(row->at(col) - h.wEnd));
+    const bool held = h.tStart <= h.tEnd - h.hold && h.wRef > 0;
+    const double tWindow = std::max(h.tEnd - h.hold, h.tStart);
+    const auto extremes = trace.range(tWindow, h.tEnd);
+    h.worst = std::max(extremes.second - h.wEnd, h.wEnd - extremes.first);
     // Held also means not drifting out: at the window's mean rate the speed
     // must stay in the band for another hold window.
-    const double tWindow = std::max(h.tEnd - h.hold, h.tStart);
-    double wWindow = h.wEnd;
-    for (const auto* row : window)
-        if (row->at(0) >= tWindow) {
-            wWindow = row->at(col);
-            break;
-        }
+    const double wWindow = trace.at(tWindow);
     const double drift = h.hold > 0 ? std::abs(h.wEnd - wWindow) / h.hold : 0;
     const double elapsed = h.tEnd - h.tStart;
     h.held = held && h.worst <= h.band && drift * h.hold <= h.band;
     // A stall is an equilibrium: below the started speed a shaft that
-    // gained speed over the second half of the run at >= a tenth of its
-    // mean rate since the start is not stalled but slow (its start is
-    // unfinished). Half the run, not the hold window: a belt mode rings
-    // through a short window.
+    // gained speed (in the drive's direction) over the second half of the
+    // run at >= a tenth of its mean rate since the start is not stalled but
+    // slow (its start is unfinished). Half the run, not the hold window: a
+    // belt mode rings through a short window.
     const double meanRate = elapsed > 0 ? std::abs(h.wEnd - h.wStart) / elapsed : 0;
     const double tMid = h.tStart + 0.5 * elapsed;
-    double wMid = h.wEnd, tMidSample = h.tEnd;
-    for (const auto* row : window)
-        if (row->at(0) >= tMid) {
-            wMid = row->at(col);
-            tMidSample = row->at(0);
-            break;
-        }
+    const double wMid = trace.at(tMid);
     // A gain inside a hundredth of the hold band is a creep, not a start
     // (a drive limited to 1e-9 N*m: 1.8e-6 rad/s in 0.2 s, judged "still
     // rising" and "not held"; issue 26 item 5).
-    h.stillRising = h.tEnd > tMidSample && (h.wEnd - wMid) / (h.tEnd - tMidSample) > 0.1 * meanRate &&
-                    h.wEnd - wMid > 0.01 * h.band;
+    h.stillRising = h.tEnd > tMid && h.direction * (h.wEnd - wMid) / (h.tEnd - tMid) > 0.1 * meanRate &&
+                    h.direction * (h.wEnd - wMid) > 0.01 * h.band;
     h.holdText = "within ±" + fmt(h.band) + " rad/s (" + fmt(h.tol * 100) + " % of ω_ref) for the last " +
                  fmt(h.hold) + " s before " + (h.tEnd >= switchTime ? "switch-off" : "the end");
     // "within ±0 rad/s" judged nothing (issue 26 item 5): with no drive
@@ -117,6 +111,38 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
         h.holdText = "(no hold band: ω_ref is 0, since no drive hints a running speed and " + body.name +
                      " was at 0 rad/s at both ends of the window, " + fmt(h.tStart) + " to " + fmt(h.tEnd) + " s)";
     return h;
+}
+
+/**
+ * A run from the solved steady state must start steady: at t = 0, in the
+ * state the integrator starts from (after its projection onto the
+ * constraints), every acceleration about the mean load (periodic
+ * excitations off) is at most 1e-6 of the largest speed per second.
+ * Otherwise the run would report a start transient that is the solver's,
+ * not the machine's: refused, naming the body and the elements on it.
+ */
+void checkSteadyStart(const Scene& scene, const ModelSpec& spec, const SimTK::State& first) {
+    SimTK::State s = first;
+    scene.setExcitationsOn(s, false);
+    scene.system().realize(s, SimTK::Stage::Acceleration);
+    double speedScale = 1;
+    for (int i = 0; i < s.getNU(); ++i) speedScale = std::max(speedScale, std::abs(s.getU()[i]));
+    const double limit = 1e-6 * speedScale;
+    int worst = -1;
+    double worstValue = limit;
+    for (int i = 0; i < s.getNU(); ++i)
+        if (!(std::abs(s.getUDot()[i]) <= worstValue)) {
+            worst = i;
+            worstValue = std::abs(s.getUDot()[i]);
+        }
+    if (worst < 0) return;
+    const std::string body = mobilityNames(scene, s)[worst];
+    const std::string on = elementsOnBody(spec, body.substr(0, body.find(".u")));
+    throw AnalysisError("transient: initial_state steady is not steady at t = " + fmt(s.getTime()) + " s: " + body +
+                        " accelerates at " + fmt(s.getUDot()[worst]) + " rad/s^2 (limit " + fmt(limit) +
+                        ") in the state the integration starts from; element " +
+                        (on.empty() ? std::string("none") : on) + " on " + body +
+                        ": the solved steady running does not hold there");
 }
 
 /// The starting sequences (Scene::startSequences) in a state, by where they
@@ -173,16 +199,20 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
     const SequenceLists seq = sequencesAt(scene, end);
     const std::string &running = seq.running, &waiting = seq.waiting, &finished = seq.finished;
     const std::string endText = " at " + fmt(end.getTime()) + " s";
-    const std::string ref = h.hinted ? "the drives' running speed " + fmt(h.wRef) + " rad/s referred to " + body.name
+    const std::string ref = h.hinted ? "the drives' running speed " + fmt(h.direction * h.wRef) +
+                                           " rad/s referred to " + body.name
                                      : "its final speed (no drive hints a rated speed)";
     const double wRpm = h.wEnd * 30 / SimTK::Pi;
+    // Progress in the drive's direction: a shaft turning against its drive
+    // (a stalled train rolled back) has made none, whatever its |ω|.
+    const double progress = h.direction * h.wEnd;
     if (!running.empty()) {
         result.verdict = "unfinished";
         result.verdictText = "start unfinished: the starting sequence had not finished" + endText + " (" + running +
                              "); " + body.name + " was at " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) + " rpm, " +
                              (h.held ? "held " : "not held ") + h.holdText +
                              "): no start time or steady values are given; lengthen end_time past the sequence's end";
-    } else if (h.held && waiting.empty() && std::abs(h.wEnd) >= fraction * h.wRef) {
+    } else if (h.held && waiting.empty() && progress >= fraction * h.wRef) {
         result.verdict = "completed";
         result.verdictText = "start completed: " + body.name + " held " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
                              " rpm) " + h.holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref +
@@ -202,7 +232,7 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
                 load += (load.empty() ? "" : ", ") + p.name + " = " + fmt(v) + " N*m";
         }
         result.verdictText = "start stalled: " + body.name + " held " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
-                             " rpm, " + fmt(100 * h.wEnd / h.wRef) + " % of " + ref + ") " + h.holdText +
+                             " rpm, " + fmt(100 * progress / h.wRef) + " % of " + ref + ") " + h.holdText +
                              (waiting.empty() ? ", below the " + fmt(fraction * 100) + " % that counts as started"
                                               : " while the starting sequence waits on the shaft" + endText + " (" +
                                                     waiting + ")") +
@@ -326,6 +356,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             throw e.error("motion", "frozen: the release is carried from step to step, and this run would be "
                                     "replayed (" + sim.replayReason() + "): set scenario.zero_dof: integrate");
     const SimTK::State first = sim.state();
+    if (start == "steady") checkSteadyStart(*scene, spec, first);
 
     // Summary at the last sample before the first switch-off: steady running.
     // Samples fall on multiples of the interval and on the switch, so that
@@ -342,42 +373,58 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     const double tWindowStart = tWindowEnd - hold - 1e-9 * std::max(1.0, std::abs(tWindowEnd));
     SimTK::State windowStart;
     bool windowCopied = false;
-    double peakDrive = 0;
-    std::vector<double> peakCoupling(scene->probes().size(), 0.0);
-    // outputs.peaks: their largest |value| and their value at the end.
-    std::vector<bool> peakWanted(scene->probes().size(), false);
-    for (std::size_t i = 0; i < scene->probes().size(); ++i)
-        peakWanted[i] = std::find(spec.outputs.peaks.begin(), spec.outputs.peaks.end(), scene->probes()[i].name) !=
-                        spec.outputs.peaks.end();
-    // When each starting sequence first stood finished (a sample's time).
+    // Design loads from the integrated trajectory (every step, maxima
+    // located inside the steps), never from the output rows: the drive
+    // torque's sum, every coupling and every outputs.peaks probe.
+    const auto& probes = scene->probes();
+    PeakTracker peakDrive([&](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::DriveTorque); });
+    std::vector<std::optional<PeakTracker>> peaks(probes.size());
+    for (std::size_t i = 0; i < probes.size(); ++i)
+        if (probes[i].role == ProbeRole::CouplingTorque ||
+            std::find(spec.outputs.peaks.begin(), spec.outputs.peaks.end(), probes[i].name) != spec.outputs.peaks.end())
+            peaks[i].emplace([&probes, i](const SimTK::State& s) { return probes[i].value(s); });
+    // speed_body's speed at every step end: the verdicts and start_time.
+    SpeedTrace trace;
+    // When each starting sequence first stood finished (a step end's time).
     const auto& sequences = scene->startSequences();
     std::vector<std::optional<double>> sequenceEnd(sequences.size());
+    auto onStep = [&](const SimTK::State& s) {
+        const double t = s.getTime();
+        trace.add(t, pinSpeed(s, speedBody.mobod), speedBody.mobod.getOneUDot(s, SimTK::MobilizerUIndex(0)));
+        peakDrive.step(sim, s);
+        for (auto& p : peaks)
+            if (p) p->step(sim, s);
+        // A sequence's end located inside the step (bisection on the
+        // trajectory: a ramp ends at its time, not at the next step end).
+        for (std::size_t i = 0; i < sequences.size(); ++i)
+            if (!sequenceEnd[i] && sequences[i].state(s).finished) {
+                double a = sim.trajectoryFrom(), b = t;
+                if (a < b && !sequences[i].state(sim.trajectoryAt(a)).finished)
+                    for (int k = 0; k < 60 && b - a > 1e-12 * std::max(1.0, b); ++k) {
+                        const double c = 0.5 * (a + b);
+                        (sequences[i].state(sim.trajectoryAt(c)).finished ? b : a) = c;
+                    }
+                sequenceEnd[i] = b;
+            }
+        // The power split's window starts exactly at tWindowStart (a state
+        // on the trajectory, not the first sample after it).
+        if (!windowCopied && t >= tWindowStart && tWindowStart <= switchTime) {
+            windowStart = sim.trajectoryAt(std::max(tWindowStart, sim.trajectoryFrom()));
+            windowCopied = true;
+        }
+    };
     auto onSample = [&](const SimTK::State& s) {
         const std::vector<double>& values = sim.probeValues();
         table.record(s, values);
-        for (std::size_t i = 0; i < sequences.size(); ++i)
-            if (!sequenceEnd[i] && sequences[i].state(s).finished) sequenceEnd[i] = s.getTime();
         if (observer) {
             SimTK::State drawn = s;
             scene->system().realize(drawn, SimTK::Stage::Acceleration);
             observer(*scene, drawn, s.getTime());
         }
-        if (!windowCopied && s.getTime() >= tWindowStart && s.getTime() <= switchTime) {
-            windowStart = s;
-            windowCopied = true;
-        }
         if (s.getTime() <= switchTime && s.getTime() > copyFrom) {
             steady = s;
             steadyCopied = true;
         }
-        double drive = 0;
-        for (std::size_t i = 0; i < values.size(); ++i) {
-            const ProbeRole role = scene->probes()[i].role;
-            if (role == ProbeRole::DriveTorque) drive += values[i];
-            if (role == ProbeRole::CouplingTorque || peakWanted[i])
-                peakCoupling[i] = std::max(peakCoupling[i], std::abs(values[i]));
-        }
-        peakDrive = std::max(peakDrive, std::abs(drive));
         if (progress) progress(s.getTime(), endTime);
     };
 
@@ -386,9 +433,9 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     if (!runoutName.empty() && std::isfinite(switchTime) && switchTime < endTime) {
         const Simulation::Watch watch = speedWatch(scene->findBody(runoutName)->mobod, sc.number("stop_speed"),
                                                    switchTime, runoutName + " comes to rest");
-        stopTime = sim.run(endTime, spec.outputs.sampleInterval, onSample, &watch);
+        stopTime = sim.run(endTime, spec.outputs.sampleInterval, onSample, &watch, onStep);
     } else {
-        sim.run(endTime, spec.outputs.sampleInterval, onSample);
+        sim.run(endTime, spec.outputs.sampleInterval, onSample, nullptr, onStep);
     }
     result.statistics = sim.statistics();
     if (!sim.replayNote().empty()) result.notes.push_back(sim.replayNote());
@@ -400,9 +447,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     const bool switched = switchTime < endTime;
     const std::string at = switched ? "just before switch-off" : "at the end of the run";
 
-    // The start verdict (from rest only): over the samples before switch-off.
-    const std::size_t speedCol = table.column(speedColumnName(*scene, speedBody));
-    const HoldCheck holdCheck = checkHold(*scene, spec, speedBody, speedCol, switchTime, result);
+    // The start verdict (from rest only): over the trajectory before switch-off.
+    const HoldCheck holdCheck = checkHold(*scene, spec, speedBody, trace, switchTime);
     if (start == "rest")
         judgeStart(*scene, spec, speedBody, holdCheck, steady, result);
     else
@@ -435,16 +481,17 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
                               "sum of drive torques " + at + ", each on its own shaft (" +
                                   probeNames(*scene, ProbeRole::DriveTorque) + ")",
                               driveShafts});
-    result.results.push_back({"peak_drive_torque", peakDrive, "N*m",
-                              "largest drive torque of the run (" + probeNames(*scene, ProbeRole::DriveTorque) + ")",
+    result.results.push_back({"peak_drive_torque", peakDrive.peak(), "N*m",
+                              "largest |drive torque| of the run (" + probeNames(*scene, ProbeRole::DriveTorque) +
+                                  "), over every integration step, maxima located inside the steps",
                               driveShafts});
     // Couplings sit on shafts of different speeds: one peak each.
     for (std::size_t i = 0; i < scene->probes().size(); ++i)
         if (scene->probes()[i].role == ProbeRole::CouplingTorque) {
             const std::string name = scene->probes()[i].name;
             const std::string shaft = probeShaft(spec, name);
-            result.results.push_back({"peak." + name, peakCoupling[i], "N*m",
-                                      "largest |" + name + "| of the run, the torque on " +
+            result.results.push_back({"peak." + name, peaks[i]->peak(), "N*m",
+                                      "largest |" + name + "| of the run (every integration step), the torque on " +
                                           (shaft.empty() ? std::string("its driving shaft") : shaft) +
                                           " (the driving shaft; the driven shaft carries it times the speed ratio)",
                                       shaft});
@@ -453,8 +500,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         for (std::size_t i = 0; i < scene->probes().size(); ++i) {
             const Probe& p = scene->probes()[i];
             if (p.name != name || p.role == ProbeRole::CouplingTorque) continue;
-            result.results.push_back({"peak." + name, peakCoupling[i], p.unit,
-                                      "largest |" + name + "| of the run (outputs.peaks)"});
+            result.results.push_back({"peak." + name, peaks[i]->peak(), p.unit,
+                                      "largest |" + name + "| of the run (outputs.peaks; every integration step)"});
             result.results.push_back(
                 {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
         }
@@ -463,16 +510,28 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         for (std::size_t i = 0; i < sequences.size(); ++i)
             if (sequenceEnd[i])
                 result.results.push_back({"sequence_end." + sequences[i].name, *sequenceEnd[i], "s",
-                                          "first sample at which " + sequences[i].name +
+                                          "instant at which " + sequences[i].name +
                                               "'s starting sequence had finished (starter out of circuit, clutch "
                                               "engaged and locked)"});
-    if (start == "rest" && omega > 0 && reached) {
-        for (const auto& row : result.rows)
-            if (row[speedCol] >= 0.95 * omega) {
-                result.results.push_back({"start_time", row[0], "s",
-                                          "first sample at 95 % of the steady speed of " + speedBody.name});
-                break;
-            }
+    if (start == "rest" && reached && omega != 0) {
+        // The instant the integrated speed first reaches 95 % of the steady
+        // speed in its direction (interpolated to the crossing).
+        const double sign = omega > 0 ? 1.0 : -1.0;
+        if (const auto t95 = trace.firstReach(0.95 * omega, sign)) {
+            result.results.push_back({"start_time", *t95, "s",
+                                      "instant at which " + speedBody.name + " first reached 95 % of its steady speed "
+                                      "(the end of the start; located on the integrated trajectory)"});
+            // A starting sequence still in circuit at that instant (star-delta
+            // by speed switches later): the start's end is the speed's, the
+            // sequence's end is given beside it.
+            for (std::size_t i = 0; i < sequences.size(); ++i)
+                if (sequenceEnd[i] && *sequenceEnd[i] > *t95)
+                    result.notes.push_back("start_time " + fmt(*t95) + " s is the instant " + speedBody.name +
+                                           " reached 95 % of its steady speed, which this summary calls the end of "
+                                           "the start; " + sequences[i].name + "'s starting sequence ended later, at " +
+                                           fmt(*sequenceEnd[i]) + " s (sequence_end." + sequences[i].name +
+                                           "; docs/will-it-start.md)");
+        }
     }
     if (stopTime) {
         result.results.push_back({"runout_time", *stopTime - switchTime, "s",
@@ -501,10 +560,19 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     if (balance && std::abs(balance->value) > kEnergyBalanceLimit && beyondAccuracy) {
         std::ostringstream why;
         why << "transient: the energy balance does not close at t = " << last.getTime() << " s (residual "
-            << balance->value << " of the run's largest energy, limit " << kEnergyBalanceLimit << "; integrator "
-            << spec.integrator.name << ", accuracy " << spec.integrator.accuracy;
-        if (spec.integrator.maxStep > 0) why << ", max_step " << spec.integrator.maxStep << " s";
-        why << "): the integration diverged or is too coarse; tighten integrator.accuracy or max_step";
+            << balance->value << " of the run's largest energy, limit " << kEnergyBalanceLimit;
+        if (sim.isReplay()) {
+            // Nothing was integrated: the energy integrals are the trapezoid
+            // rule over the replay's placements.
+            why << "; replayed, no integrator: energy integrals by the trapezoid rule over " << result.statistics.steps
+                << " placements";
+            if (spec.integrator.maxStep > 0) why << ", max_step " << spec.integrator.maxStep << " s";
+            why << "): the placements are too coarse for the drives' laws; lower integrator.max_step";
+        } else {
+            why << "; integrator " << spec.integrator.name << ", accuracy " << spec.integrator.accuracy;
+            if (spec.integrator.maxStep > 0) why << ", max_step " << spec.integrator.maxStep << " s";
+            why << "): the integration diverged or is too coarse; tighten integrator.accuracy or max_step";
+        }
         throw AnalysisError(why.str());
     }
     addDefaultPlots(result);
