@@ -122,6 +122,10 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
  * not the machine's: refused, naming the body and the elements on it.
  */
 void checkSteadyStart(const Scene& scene, const ModelSpec& spec, const SimTK::State& first) {
+    // A switching at the start itself (switch_off_time: 0 s, a coast-down
+    // from steady running) changes the accelerations at t = 0 on purpose.
+    for (const auto& e : scene.switchEvents())
+        if (e.time <= first.getTime()) return;
     SimTK::State s = first;
     scene.setExcitationsOn(s, false);
     scene.system().realize(s, SimTK::Stage::Acceleration);
@@ -555,9 +559,11 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     for (const auto& [name, w] : scene->speedHints())
         if (const BodySpec* b = spec.findBody(name)) runningEnergy += 0.5 * b->inertia * w * w;
     const ResultScalar* residual = result.find("energy_balance_residual");
+    // Written as "not within", so that a NaN or infinite residual (a run
+    // that diverged) is refused too.
     const bool beyondAccuracy =
-        !residual || std::abs(residual->value) > spec.integrator.accuracy * runningEnergy;
-    if (balance && std::abs(balance->value) > kEnergyBalanceLimit && beyondAccuracy) {
+        !residual || !(std::abs(residual->value) <= spec.integrator.accuracy * runningEnergy);
+    if (balance && !(std::abs(balance->value) <= kEnergyBalanceLimit) && beyondAccuracy) {
         std::ostringstream why;
         why << "transient: the energy balance does not close at t = " << last.getTime() << " s (residual "
             << balance->value << " of the run's largest energy, limit " << kEnergyBalanceLimit;

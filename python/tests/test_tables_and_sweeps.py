@@ -135,14 +135,18 @@ def test_progress_callback_and_cancel(tmp_path):
     assert seen and seen[-1] == (4, 4, 0)
     assert [d for d, _, _ in seen] == sorted(d for d, _, _ in seen)
     # progress returning False stops the sweep: Cancelled, finished points kept.
+    # Points of about 0.5 s each (progress is polled every 50 ms, so a point
+    # shorter than that could all finish before the first call).
+    slow = milldyn.Model(IDLE, set={"elements.motor.switch_off_time": "1000 s", "scenario.end_time": "150 s",
+                                    "outputs.plots": "false"})
     with pytest.raises(milldyn.Cancelled):
-        milldyn.sweep(model, grid={"elements.grinding.constant_torque": ("10 N*m", "13 N*m", 4)}, jobs=1,
+        milldyn.sweep(slow, grid={"elements.grinding.constant_torque": ("10 N*m", "13 N*m", 4)}, jobs=1,
                       out=tmp_path / "stopped", progress=lambda done, total, failed: done < 1)
     kept = os.listdir(tmp_path / "stopped" / "points")
     assert 1 <= len(kept) < 4
     assert not os.path.exists(tmp_path / "stopped" / "sweep.csv")
     # ... and resume: the kept points are reused.
-    t = milldyn.sweep(model, grid={"elements.grinding.constant_torque": ("10 N*m", "13 N*m", 4)}, jobs=1,
+    t = milldyn.sweep(slow, grid={"elements.grinding.constant_torque": ("10 N*m", "13 N*m", 4)}, jobs=1,
                       out=tmp_path / "stopped")
     assert t.summary["resumed"] == len(kept)
     # A CancelToken set from another thread.

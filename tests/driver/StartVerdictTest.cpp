@@ -99,7 +99,7 @@ TEST(StartValidation, EveryStartCasePasses) {
     const auto rows = startCases("");
     EXPECT_GE(rows.size(), 46u);  // converter, currents, roll-back, backstop and dq rows included
     for (const auto& r : rows) EXPECT_EQ(r.status, "pass") << r.caseName << " " << r.quantity << " rel " << r.relError;
-    test::expectSectionCounts(rows, "Motor starts (issue 15)", {46, 0, 0, 0});
+    test::expectSectionCounts(rows, "Motor starts (issue 15)", {64, 0, 0, 0});
 }
 
 

@@ -106,7 +106,7 @@ TEST(ReportWriter, CountsSectionsMisprintsFailuresAndPlots) {
     EXPECT_NE(md.find("## Alpha mill (seed 999): 1 pass, 1 flagged, 1 info, 1 fail"), std::string::npos);
     EXPECT_NE(md.find("## Other cases: 1 pass, 0 flagged, 0 info, 0 fail"), std::string::npos);
     EXPECT_NE(md.find("### Observations within their expected bands (1)"), std::string::npos);
-    EXPECT_NE(md.find("expected [4.7, 5]: between the bounds"), std::string::npos);
+    EXPECT_NE(md.find("expected \\[4.7, 5\\]: between the bounds"), std::string::npos);  // Markdown-escaped brackets
     EXPECT_EQ(md.find("Beta crusher"), std::string::npos);
     EXPECT_NE(md.find("### Flagged misprints (1)"), std::string::npos);
     EXPECT_NE(md.find("### FAILURES (1)"), std::string::npos);

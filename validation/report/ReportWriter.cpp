@@ -318,7 +318,7 @@ void emitSection(Doc& doc, const ReportSection& s, const std::vector<ValidationR
     if (!observed.empty()) {
         // Each with its expected band and the band's reason (in the note).
         doc.heading(3, "Observations within their expected bands (" + std::to_string(observed.size()) + ")");
-        doc.table(rowTable("", observed, false));
+        doc.table(rowTable("", observed, true));  // with the note: the band and its reason
     }
     if (!failed.empty()) {
         doc.heading(3, "FAILURES (" + std::to_string(failed.size()) + ")");
