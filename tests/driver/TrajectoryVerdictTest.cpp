@@ -185,6 +185,20 @@ TEST(SamplingIndependence, TheBurrMillsPeakBeltTorqueDoesNotDependOnTheSampling)
     expectSameAtThreeIntervals(kModels + "burr_mill_5p5kW_loaded_start.yaml", {}, {"2 ms", "0.1 s", "0.5 s"}, 1e-3);
 }
 
+// The demo (burr mill idle, CPodes, switched off at 4 s) is a completed
+// start whatever the integrator. CPodes steps past the switch-off and
+// interpolates back; before that interpolated stop was a trajectory point,
+// the speed trace joined the last step end before 4 s to the state after
+// the switching (the motor off, decelerating) and its cubic overshot by
+// 182 rad/s inside the hold window: "start unfinished" on the demo.
+TEST(SamplingIndependence, TheDemoStartIsCompletedOnEveryIntegrator) {
+    for (const char* integrator : {"CPodes", "RungeKuttaMerson"}) {
+        const AnalysisResult r = runModelFile(kModels + "burr_mill_5p5kW_idle.yaml",
+                                              {{"integrator.name", integrator}, {"outputs.plots", "false"}});
+        EXPECT_EQ(r.verdict, "completed") << integrator << ": " << r.verdictText;
+    }
+}
+
 // start_time is the crossing instant, not the first sample past it: the
 // same at 1 ms and at 0.25 s sampling to well under either interval.
 TEST(SamplingIndependence, StartTimeIsInterpolatedToTheCrossing) {
