@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <iomanip>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -270,6 +272,33 @@ bool writeModeShapePlot(const std::string& png, const std::vector<ModeShapeBars>
 
 }  // namespace
 
+std::string panelYAxisCommands(const AnalysisResult& result, const std::vector<std::size_t>& columns, double scale) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& row : result.rows)
+        for (std::size_t col : columns)
+            if (col < row.size() && std::isfinite(row[col])) {
+                lo = std::min(lo, scale * row[col]);
+                hi = std::max(hi, scale * row[col]);
+            }
+    if (!(lo <= hi)) return "set autoscale y\nset format y '% h'\n";
+    const double magnitude = std::max(std::abs(lo), std::abs(hi));
+    std::ostringstream out;
+    out << std::setprecision(17);
+    // gnuplot's own tick format (6 significant digits) labels every tick of a
+    // range narrower than ~1e-5 of its level alike ("500, 500, 500"): a level
+    // constant to 1e-9 is drawn as constant on a ±5 % axis, a narrow band with
+    // the digits that tell its ticks apart.
+    if (hi - lo <= 1e-9 * magnitude || magnitude == 0) {
+        const double pad = magnitude > 0 ? 0.05 * magnitude : 1.0;
+        out << "set yrange [" << lo - pad << ":" << hi + pad << "]\nset format y '% h'\n";
+        return out.str();
+    }
+    const int digits = static_cast<int>(std::ceil(std::log10(magnitude / (hi - lo)))) + 2;
+    if (digits <= 6) return "set autoscale y\nset format y '% h'\n";
+    out << "set autoscale y\nset format y '%." << std::min(digits, 15) << "g'\n";
+    return out.str();
+}
+
 std::string formatPlotCommands(const AnalysisResult& result, const std::string& title,
                                const std::vector<std::size_t>& columns, const std::string& csvPath) {
     auto labelOf = [&](std::size_t col) {
@@ -295,6 +324,7 @@ std::string formatPlotCommands(const AnalysisResult& result, const std::string& 
                                   (degrees ? std::string("deg") : result.columnUnits[first]) + "]")
                << "\n";
         if (panels.size() == 1) script << "set title " << quoteForGnuplot(title) << "\n";
+        script << panelYAxisCommands(result, panels[p], degrees ? 180 / 3.14159265358979323846 : 1.0);
         script << "plot ";
         for (std::size_t k = 0; k < panels[p].size(); ++k) {
             const std::size_t col = panels[p][k];

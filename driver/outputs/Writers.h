@@ -57,6 +57,11 @@ std::string formatSummaryJson(const ModelSpec& spec, const AnalysisResult& resul
 /// in the plot's order of first appearance. Columns that stay 0 join the
 /// first panel.
 std::vector<std::vector<std::size_t>> plotPanels(const AnalysisResult& result, const std::vector<std::size_t>& columns);
+/// gnuplot y-axis commands for one panel of `columns` (values × `scale`):
+/// autoscale with gnuplot's tick format, unless the panel's range is too
+/// narrow for it to tell the ticks apart: a constant level (to 1e-9) on a
+/// ±5 % axis, a narrow band with enough significant digits.
+std::string panelYAxisCommands(const AnalysisResult& result, const std::vector<std::size_t>& columns, double scale);
 
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <string>
 #include <vector>
 
 namespace milldyn {
@@ -29,6 +31,31 @@ TEST(PlotPanels, LikeMagnitudesAndZeroColumnsShareOnePanel) {
     const auto panels = plotPanels(r, {1, 2, 3});
     ASSERT_EQ(panels.size(), 1u);
     EXPECT_EQ(panels[0], (std::vector<std::size_t>{1, 2, 3}));
+}
+
+// torques.png labelled every tick "500" for a constant 500 N*m column
+// (gnuplot widens an almost-flat range and its 6-digit tick format cannot
+// tell the ticks apart).
+TEST(PlotPanels, AConstantColumnIsDrawnOnAFivePercentAxis) {
+    const AnalysisResult r = table({{0, 500}, {1, 500}, {2, 500}});
+    EXPECT_EQ(panelYAxisCommands(r, {1}, 1.0), "set yrange [475:525]\nset format y '% h'\n");
+    const AnalysisResult zero = table({{0, 0}, {1, 0}});
+    EXPECT_EQ(panelYAxisCommands(zero, {1}, 1.0), "set yrange [-1:1]\nset format y '% h'\n");
+}
+
+TEST(PlotPanels, ANarrowBandGetsDigitsThatTellItsTicksApart) {
+    const AnalysisResult r = table({{0, 500.0001}, {1, 500.0002}});
+    const std::string cmd = panelYAxisCommands(r, {1}, 1.0);
+    const auto at = cmd.find("set format y '%.");
+    ASSERT_NE(at, std::string::npos) << cmd;
+    const std::string format = cmd.substr(at + 14, cmd.find('\'', at + 14) - at - 14);
+    // Ticks a fifth of the band apart must print differently.
+    char a[64], b[64];
+    std::snprintf(a, sizeof a, format.c_str(), 500.0001);
+    std::snprintf(b, sizeof b, format.c_str(), 500.0001 + 0.2e-4);
+    EXPECT_STRNE(a, b) << format;
+    // An ordinary range keeps gnuplot's own format.
+    EXPECT_EQ(panelYAxisCommands(table({{0, 10}, {1, 20}}), {1}, 1.0), "set autoscale y\nset format y '% h'\n");
 }
 
 }  // namespace
