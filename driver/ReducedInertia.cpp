@@ -21,27 +21,27 @@ constexpr int kDenseFallbackLimit = 400;   // mobilities up to which a dense che
 /// The kernel of `a` (rows x n) when it is one-dimensional: its dimension,
 /// and in `v` its vector. Sparse QR with COLAMD: A P = Q [R11 R12; 0 0],
 /// so v = P [-R11⁻¹ R12; 1] for the one column found dependent.
-int sparseKernel(const Eigen::SparseMatrix<double>& a, int n, Eigen::VectorXd& v, ReducedInertiaWork& work) {
+int sparseKernel(const ::Eigen::SparseMatrix<double>& a, int n, ::Eigen::VectorXd& v, ReducedInertiaWork& work) {
     // SparseQR wants at least as many rows as columns: zero rows change nothing.
-    Eigen::SparseMatrix<double> padded = a;
+    ::Eigen::SparseMatrix<double> padded = a;
     if (padded.rows() < n) padded.conservativeResize(n, n);
     padded.makeCompressed();
     double largest = 0;
     for (int j = 0; j < padded.outerSize(); ++j) largest = std::max(largest, padded.col(j).norm());
-    Eigen::SparseQR<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> qr;
+    ::Eigen::SparseQR<::Eigen::SparseMatrix<double>, ::Eigen::COLAMDOrdering<int>> qr;
     qr.setPivotThreshold(kRankThreshold * std::max(largest, 1e-300));
     qr.compute(padded);
-    if (qr.info() != Eigen::Success) return -1;
+    if (qr.info() != ::Eigen::Success) return -1;
     const int rank = static_cast<int>(qr.rank());
-    const Eigen::SparseMatrix<double> r = qr.matrixR();
+    const ::Eigen::SparseMatrix<double> r = qr.matrixR();
     work.factorNonzeros += r.nonZeros();
     const int kernel = n - rank;
     if (kernel != 1) return kernel;
-    Eigen::VectorXd y = Eigen::VectorXd::Ones(n);
+    ::Eigen::VectorXd y = ::Eigen::VectorXd::Ones(n);
     if (rank > 0) {
-        const Eigen::SparseMatrix<double> r11 = r.topLeftCorner(rank, rank);
-        const Eigen::VectorXd r12 = Eigen::VectorXd(r.col(rank)).head(rank);
-        y.head(rank) = -r11.triangularView<Eigen::Upper>().solve(r12);
+        const ::Eigen::SparseMatrix<double> r11 = r.topLeftCorner(rank, rank);
+        const ::Eigen::VectorXd r12 = ::Eigen::VectorXd(r.col(rank)).head(rank);
+        y.head(rank) = -r11.triangularView<::Eigen::Upper>().solve(r12);
     }
     v = qr.colsPermutation() * y;
     return 1;
@@ -67,7 +67,7 @@ void addReducedInertias(Scene& scene, ReducedInertiaWork* workOut) {
     matter.calcG(s, g);
     const auto& residuals = scene.steadyResiduals();
     const int rowCount = g.nrow() + static_cast<int>(residuals.size());
-    std::vector<Eigen::Triplet<double>> entries;
+    std::vector<::Eigen::Triplet<double>> entries;
     for (int i = 0; i < g.nrow(); ++i)
         for (int j = 0; j < n; ++j)
             if (g(i, j) != 0) entries.emplace_back(i, j, g(i, j));
@@ -86,14 +86,14 @@ void addReducedInertias(Scene& scene, ReducedInertiaWork* workOut) {
             if (d != 0) entries.emplace_back(g.nrow() + static_cast<int>(k), j, d);
         }
     }
-    Eigen::SparseMatrix<double> rows(rowCount, n);
+    ::Eigen::SparseMatrix<double> rows(rowCount, n);
     rows.setFromTriplets(entries.begin(), entries.end());
     work.matrixNonzeros = rows.nonZeros();
-    Eigen::VectorXd v;
+    ::Eigen::VectorXd v;
     int kernel = 0;
     if (rowCount == 0) {
         kernel = n;
-        if (n == 1) v = Eigen::VectorXd::Ones(1);
+        if (n == 1) v = ::Eigen::VectorXd::Ones(1);
     } else {
         kernel = sparseKernel(rows, n, v, work);
         // The kernel found must be one: |A v| small against |A| |v|.
@@ -103,7 +103,7 @@ void addReducedInertias(Scene& scene, ReducedInertiaWork* workOut) {
         const bool checked = kernel == 1 && scale > 0 && (rows * v).norm() <= 1e-8 * largest * v.norm();
         if (!checked && n <= kDenseFallbackLimit) {
             work.dense = true;
-            Eigen::FullPivLU<Eigen::MatrixXd> lu{Eigen::MatrixXd(rows)};
+            ::Eigen::FullPivLU<::Eigen::MatrixXd> lu{::Eigen::MatrixXd(rows)};
             lu.setThreshold(kRankThreshold);
             kernel = static_cast<int>(lu.dimensionOfKernel());
             if (kernel == 1) v = lu.kernel().col(0);
