@@ -17,7 +17,9 @@
 #include <vector>
 
 #include "driver/Cli.h"
+#include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/SteadyStart.h"
 
 namespace milldyn {
 namespace {
@@ -294,6 +296,82 @@ TEST(SteadyStart, APlanetOnTheCarrierStartsAtTheStaticCouplingTorque) {
     EXPECT_EQ(r.verdict, "steady_held") << r.verdictText;
     for (std::size_t i = 0; i < r.rows.size(); ++i)
         EXPECT_NEAR(r.value(i, "stage.torque"), 500, 1e-3) << "t = " << r.value(i, "time");
+}
+
+/// The planet model's solved steady state with the sun turned 1e-4 rad
+/// ahead: the coupling's torque moves off its static 500 N*m by the
+/// stiffness (1e6 N*m/rad) times that twist, so sun and carrier accelerate
+/// (the sun at the order of 1e6·1e-4 N*m / 10 kg*m^2 = 10 rad/s^2, far
+/// above 1e-6 of the running speed per second): what a steady solver that
+/// left the coupling off its static twist would hand over.
+struct PerturbedSteady {
+    ModelSpec spec;
+    std::unique_ptr<Scene> scene;
+    SimTK::State solved, perturbed;
+};
+PerturbedSteady perturbedSteady(const std::vector<Override>& overrides) {
+    PerturbedSteady p;
+    p.spec = readModelFile(writeModel("planet_on_carrier.yaml", kPlanetOnCarrier), defaultModelReader(), overrides);
+    p.scene = buildScene(p.spec);
+    p.solved = solveSteadyState(*p.scene, initialState(*p.scene, p.spec));
+    p.perturbed = p.solved;
+    const SimTK::MobilizedBody sun = p.scene->findBody("sun")->mobod;
+    sun.setOneQ(p.perturbed, SimTK::MobilizerQIndex(0), sun.getOneQ(p.solved, SimTK::MobilizerQIndex(0)) + 1e-4);
+    p.scene->system().realize(p.perturbed, SimTK::Stage::Acceleration);
+    return p;
+}
+
+// The check itself: the solved state passes, a state that is not steady
+// is refused naming the body that accelerates and the elements on it.
+TEST(SteadyStart, AStartThatIsNotSteadyIsRefusedNamingTheBodyAndItsElements) {
+    const PerturbedSteady p = perturbedSteady({});
+    EXPECT_NO_THROW(checkSteadyStart(*p.scene, p.spec, p.solved, p.solved));
+    try {
+        checkSteadyStart(*p.scene, p.spec, p.perturbed, p.perturbed);
+        ADD_FAILURE() << "a twisted coupling passed as steady";
+    } catch (const AnalysisError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("initial_state steady is not steady at t = 0 s: sun"), std::string::npos) << what;
+        EXPECT_NE(what.find("element motor, stage on sun"), std::string::npos) << what;
+        EXPECT_EQ(what.find("switching"), std::string::npos) << what;
+    }
+}
+
+// A switching at t = 0 (the motor switched off: a coast-down from steady
+// running) skipped the check on main, so whatever the solver handed over
+// was integrated as steady running. Now the running the switching disturbs
+// is checked: refused, naming the switching.
+TEST(SteadyStart, ASwitchingAtTZeroNoLongerHidesAStartThatIsNotSteady) {
+    const PerturbedSteady p = perturbedSteady({{"elements.motor.switch_off_time", "0 s"}});
+    ASSERT_EQ(p.scene->switchEvents().size(), 1u);
+    SimTK::State first = p.perturbed;  // the integration's start: the switching applied
+    p.scene->switchEvents().front().apply(first);
+    try {
+        checkSteadyStart(*p.scene, p.spec, p.perturbed, first);
+        ADD_FAILURE() << "not steady, but passed because of the switching at t = 0";
+    } catch (const AnalysisError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("not steady at t = 0 s: sun"), std::string::npos) << what;
+        EXPECT_NE(what.find("before the switching at t = 0 (motor switched off)"), std::string::npos) << what;
+        EXPECT_NE(what.find("element motor, stage on sun"), std::string::npos) << what;
+    }
+    // The solved state with the same switching passes: the coast-down the
+    // switching starts is no fault of the steady running.
+    SimTK::State coast = p.solved;
+    p.scene->switchEvents().front().apply(coast);
+    EXPECT_NO_THROW(checkSteadyStart(*p.scene, p.spec, p.solved, coast));
+}
+
+// The whole run with the switching at t = 0: the coast-down starts from
+// the checked steady running, the coupling at its static 5000/10 = 500 N*m
+// and the motor already off (0 N*m) in the first row.
+TEST(SteadyStart, ACoastDownFromTZeroStartsFromTheStaticSteadyRunning) {
+    const AnalysisResult r = runModelFile(writeModel("planet_on_carrier.yaml", kPlanetOnCarrier),
+                                          {{"elements.motor.switch_off_time", "0 s"}});
+    ASSERT_FALSE(r.rows.empty());
+    EXPECT_NEAR(r.value(0, "time"), 0, 1e-15);
+    EXPECT_NEAR(r.value(0, "stage.torque"), 500, 1e-3);
+    EXPECT_NEAR(r.value(0, "motor.torque"), 0, 1e-9);
 }
 
 }  // namespace
