@@ -6,7 +6,7 @@
 # tolerance, in one run; errors against a tight Odeint reference and speed
 # ratios against Odeint dopri5, the best SciPy method and bare Simbody.
 #   bench/run.sh [TOL] [REPEATS]
-# MILLDYN_BENCH_SCENES (default "burr roll kinetostatic") picks the parts run,
+# MILLDYN_BENCH_SCENES (default "burr roll kinetostatic trajectory") picks the parts run,
 # e.g. MILLDYN_BENCH_SCENES=roll for the roll crusher alone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,7 +27,7 @@ engines="${MILLDYN_BENCH_ENGINES:-release debian}"
 dir_of() { [ "$1" = release ] && echo build || echo build-debian; }
 for e in $engines; do
   MILLDYN_BUILD_DIR="$(dir_of "$e")" MILLDYN_ENGINE="$e" \
-    MILLDYN_BUILD_TARGETS="bench_odeint bench_milldyn bench_bare_simbody bench_kinetostatic" \
+    MILLDYN_BUILD_TARGETS="bench_odeint bench_milldyn bench_bare_simbody bench_kinetostatic bench_trajectory" \
     scripts/build.sh -DMILLDYN_BENCH=ON
 done
 first="$(dir_of "${engines%% *}")"
@@ -45,7 +45,7 @@ engine_runs() {  # engine_runs PROGRAM ARGS...: every engine, lines tagged
     "$d/$p" "$@" | sed "s/^{/{\"engine\": \"$tag\", /"
   done
 }
-scenes=" ${MILLDYN_BENCH_SCENES:-burr roll kinetostatic} "
+scenes=" ${MILLDYN_BENCH_SCENES:-burr roll kinetostatic trajectory} "
 runs() { [[ "$scenes" == *" $1 "* ]]; }
 echo "# $(date -u '+%Y-%m-%d %H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg), $(getconf _NPROCESSORS_ONLN) cores, engines: $engines"  # getconf: nproc obeys OMP_NUM_THREADS
 if runs burr; then
@@ -73,5 +73,10 @@ if runs kinetostatic; then
 out=$(mktemp)
 engine_runs bench_kinetostatic 2000 3 > "$out"
 /usr/bin/python3 bench/report.py "$out"
+fi
+# What judging transients from every integration step costs against the
+# rows alone (bench/trajectory_cost.cpp; issue 26): one JSON line per start.
+if runs trajectory; then
+engine_runs bench_trajectory "$repeats"
 fi
 echo "# done $(date -u '+%H:%M UTC'), load average $(cut -d' ' -f1-3 /proc/loadavg)"

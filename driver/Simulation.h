@@ -169,7 +169,7 @@ private:
     RunStatistics m_extra;  // work done by crossing searches
     SimTK::State m_crossingSample;
     bool m_lastSampleIsCrossing = false;
-    bool m_sampleByHermite = false;  // see initialize()
+    bool m_sampleByHermite = false;  // a sample needs no projection (see initialize())
     SimTK::State m_sample;           // the interpolated sample (own sampling)
     // The last (up to three) step ends since the last restart, for
     // trajectoryAt(): time, y and ẏ.

@@ -4,6 +4,7 @@
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/analyses/MotorReports.h"
+#include "driver/analyses/SteadyStart.h"
 #include "driver/analyses/Trajectory.h"
 #include "plugins/loads/BreakawayResistance.h"
 #include "plugins/scene/Format.h"
@@ -111,42 +112,6 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
         h.holdText = "(no hold band: ω_ref is 0, since no drive hints a running speed and " + body.name +
                      " was at 0 rad/s at both ends of the window, " + fmt(h.tStart) + " to " + fmt(h.tEnd) + " s)";
     return h;
-}
-
-/**
- * A run from the solved steady state must start steady: at t = 0, in the
- * state the integrator starts from (after its projection onto the
- * constraints), every acceleration about the mean load (periodic
- * excitations off) is at most 1e-6 of the largest speed per second.
- * Otherwise the run would report a start transient that is the solver's,
- * not the machine's: refused, naming the body and the elements on it.
- */
-void checkSteadyStart(const Scene& scene, const ModelSpec& spec, const SimTK::State& first) {
-    // A switching at the start itself (switch_off_time: 0 s, a coast-down
-    // from steady running) changes the accelerations at t = 0 on purpose.
-    for (const auto& e : scene.switchEvents())
-        if (e.time <= first.getTime()) return;
-    SimTK::State s = first;
-    scene.setExcitationsOn(s, false);
-    scene.system().realize(s, SimTK::Stage::Acceleration);
-    double speedScale = 1;
-    for (int i = 0; i < s.getNU(); ++i) speedScale = std::max(speedScale, std::abs(s.getU()[i]));
-    const double limit = 1e-6 * speedScale;
-    int worst = -1;
-    double worstValue = limit;
-    for (int i = 0; i < s.getNU(); ++i)
-        if (!(std::abs(s.getUDot()[i]) <= worstValue)) {
-            worst = i;
-            worstValue = std::abs(s.getUDot()[i]);
-        }
-    if (worst < 0) return;
-    const std::string body = mobilityNames(scene, s)[worst];
-    const std::string on = elementsOnBody(spec, body.substr(0, body.find(".u")));
-    throw AnalysisError("transient: initial_state steady is not steady at t = " + fmt(s.getTime()) + " s: " + body +
-                        " accelerates at " + fmt(s.getUDot()[worst]) + " rad/s^2 (limit " + fmt(limit) +
-                        ") in the state the integration starts from; element " +
-                        (on.empty() ? std::string("none") : on) + " on " + body +
-                        ": the solved steady running does not hold there");
 }
 
 /// The starting sequences (Scene::startSequences) in a state, by where they
@@ -321,6 +286,41 @@ void judgeRun(const Scene& scene, const ModelSpec& spec, const SceneBody& body, 
 
 }  // namespace
 
+void checkSteadyStart(const Scene& scene, const ModelSpec& spec, const SimTK::State& solved, const SimTK::State& first) {
+    // The solved configuration (switch flags, kept loads as solved) at the
+    // integration's start positions and speeds. A switching due at t = 0
+    // is applied to `first` only: it no longer hides the check (on main a
+    // switching at t = 0 skipped it, so a steady state that did not hold was
+    // integrated as one whenever a coast-down began at t = 0).
+    SimTK::State s = solved;
+    s.setTime(first.getTime());
+    s.updY() = first.getY();
+    scene.setExcitationsOn(s, false);
+    scene.system().realize(s, SimTK::Stage::Acceleration);
+    double speedScale = 1;
+    for (int i = 0; i < s.getNU(); ++i) speedScale = std::max(speedScale, std::abs(s.getU()[i]));
+    const double limit = 1e-6 * speedScale;
+    int worst = -1;
+    double worstValue = limit;
+    for (int i = 0; i < s.getNU(); ++i)
+        if (!(std::abs(s.getUDot()[i]) <= worstValue)) {
+            worst = i;
+            worstValue = std::abs(s.getUDot()[i]);
+        }
+    if (worst < 0) return;
+    std::string atStart;
+    for (const auto& e : scene.switchEvents())
+        if (e.time <= first.getTime()) atStart += (atStart.empty() ? "" : ", ") + e.what;
+    const std::string body = mobilityNames(scene, s)[worst];
+    const std::string on = elementsOnBody(spec, body.substr(0, body.find(".u")));
+    throw AnalysisError("transient: initial_state steady is not steady at t = " + fmt(s.getTime()) + " s: " + body +
+                        " accelerates at " + fmt(s.getUDot()[worst]) + " rad/s^2 (limit " + fmt(limit) +
+                        ") in the state the integration starts from" +
+                        (atStart.empty() ? std::string() : ", before the switching at t = 0 (" + atStart + ")") +
+                        "; element " + (on.empty() ? std::string("none") : on) + " on " + body +
+                        ": the solved steady running does not hold there");
+}
+
 AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     const ElementSpec& sc = spec.scenario;
     checkStopSpeed(spec);
@@ -360,7 +360,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             throw e.error("motion", "frozen: the release is carried from step to step, and this run would be "
                                     "replayed (" + sim.replayReason() + "): set scenario.zero_dof: integrate");
     const SimTK::State first = sim.state();
-    if (start == "steady") checkSteadyStart(*scene, spec, first);
+    if (start == "steady") checkSteadyStart(*scene, spec, state, first);
 
     // Summary at the last sample before the first switch-off: steady running.
     // Samples fall on multiples of the interval and on the switch, so that

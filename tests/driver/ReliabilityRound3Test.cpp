@@ -246,6 +246,57 @@ TEST(MeaningfulNumbers, RunoutTimeShorterThanTheModelCanGiveIsRefusedWithTheShor
     }
 }
 
+// runout_time = 1e4 s ran past 600 s: the search integrated trials of up to
+// 50·t_v + 10 s. With bearing friction of 30 N*m on the motor shaft the burr
+// mill stops within a second even with no grinding resistance at all: 1e4 s
+// is no run-out this model gives, refused at the key with its longest.
+TEST(MeaningfulNumbers, RunoutTimeLongerThanTheModelCanGiveIsRefusedAtTheKeyWithTheLongest) {
+    std::string text = slurp(kModels + "burr_mill_5p5kW_identify.yaml");
+    const std::string elements = "elements:\n";
+    ASSERT_NE(text.find(elements), std::string::npos);
+    text.insert(text.find(elements) + elements.size(),
+                "  - {type: ResistanceTorque, name: bearings, body: motor_shaft, constant_torque: 30 N*m}\n");
+    const ModelSpec spec =
+        test::readText("burr.yaml", text, {{"scenario.runout_time", "1e4 s"}, {"outputs.plots", "false"}});
+    try {
+        runAnalysis(spec);
+        ADD_FAILURE() << "an answer for 1e4 s";
+    } catch (const SpecError& e) {
+        expectOneLocatedLine(e, "<--set scenario.runout_time>", "scenario.runout_time",
+                             "the longest run-out this model gives is ");
+        // The longest is the run-out without grinding resistance: the
+        // momentum Σ J·ω at switch-off over the 30 N*m of friction, 0.11731
+        // kg*m^2 at about 150 rad/s: about 0.6 s (the belt's damping only
+        // moves energy between the shafts).
+        const std::string what = e.what();
+        const double longest = std::stod(what.substr(what.find("gives is ") + 9));
+        EXPECT_GT(longest, 0.4) << what;
+        EXPECT_LT(longest, 0.8) << what;
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "not a located refusal: " << e.what();
+    }
+}
+
+// The shipped burr mill has no loss but the grinding resistance: 1e4 s is
+// within reach with a small one, but each trial would take about 1e7 steps
+// of its 183 rad/s belt mode at accuracy 1e-10. The search is given up at
+// once with the projected work (it ran past 600 s).
+TEST(MeaningfulNumbers, RunoutTimeBeyondTheWorkBoundIsGivenUpAtOnceSayingSo) {
+    const ModelSpec spec = readModelFile(kModels + "burr_mill_5p5kW_identify.yaml", defaultModelReader(),
+                                         {{"scenario.runout_time", "1e4 s"}, {"outputs.plots", "false"}});
+    try {
+        runAnalysis(spec);
+        ADD_FAILURE() << "an answer for 1e4 s";
+    } catch (const SpecError& e) {
+        ADD_FAILURE() << "refused as impossible, but the model reaches it: " << e.formatted();
+    } catch (const AnalysisError& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(contains(what, "runout_time 10000 s is not reached within the work bound")) << what;
+        EXPECT_TRUE(contains(what, "more than the 500000 one identification may take")) << what;
+        EXPECT_FALSE(contains(what, "\n")) << what;
+    }
+}
+
 // ---------------------------------------------------------------- item 7
 
 // μ ≈ 260 overflowed e^(μθ) and failed at t = 0 with "not finite".
