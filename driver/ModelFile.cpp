@@ -1,6 +1,7 @@
 #include "driver/ModelFile.h"
 
 #include "driver/Units.h"
+#include "plugins/scene/Schedule.h"
 
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
@@ -532,12 +533,61 @@ private:
                     }
                     break;
                 case ParamKind::Text:
-                    v.text = scalar(n, key);
+                    if (isScheduleParam(p))
+                        readSchedule(n, key, v);
+                    else
+                        v.text = scalar(n, key);
                     break;
             }
             out.params[p.key] = v;
         }
         if (schema.crossCheck) schema.crossCheck(out);
+    }
+
+    /// A schedule key: a map of one shape, `{ramp: {duration: 10 s}}` or
+    /// `{table: [[0 s, 0], [2 s, 1]]}`, into the shape's name (v.text) and
+    /// its numbers in SI (v.numbers, as Schedule::decode takes them).
+    void readSchedule(const YAML::Node& n, const std::string& key, ParamValue& v) const {
+        requireMap(n, key);
+        const std::vector<std::string>& shapes = Schedule::shapeNames();
+        checkKeys(n, key + ".", shapes);
+        if (n.size() != 1)
+            throw error(n, key, "expected one shape (" + joinWords(shapes) + "), got " + std::to_string(n.size()));
+        const auto it = n.begin();
+        v.text = it->first.Scalar();
+        const YAML::Node body = it->second;
+        const std::string sub = key + "." + v.text;
+        if (v.text == "table") {
+            requireList(body, sub);
+            if (body.size() < 2) throw error(body, sub, "expected at least 2 rows [time, factor]");
+            for (std::size_t i = 0; i < body.size(); ++i) {
+                const YAML::Node row = body[i];
+                requireList(row, sub);
+                if (row.size() != 2)
+                    throw error(row, sub, "expected a row [time, factor], got " + std::to_string(row.size()) + " items");
+                v.numbers.push_back(readNumber(row[0], sub, "s"));
+                v.numbers.push_back(readNumber(row[1], sub, "1"));
+            }
+        } else {
+            requireMap(body, sub);
+            std::vector<std::string> allowed;
+            for (const auto& k : Schedule::keysOf(v.text)) allowed.push_back(k.name);
+            checkKeys(body, sub + ".", allowed);
+            for (const auto& k : Schedule::keysOf(v.text)) {
+                const YAML::Node x = body[k.name];
+                if (!x) {
+                    if (k.required) throw error(body, sub + "." + k.name, "missing required key '" + k.name + "'");
+                    v.numbers.push_back(k.defaultValue);
+                } else {
+                    v.numbers.push_back(readNumber(x, sub + "." + k.name, k.unit));
+                }
+            }
+        }
+        try {
+            Schedule::decode(v.text, v.numbers);
+        } catch (const std::invalid_argument& e) {
+            throw error(body, sub, e.what());
+        }
     }
 
     void requireCount(const YAML::Node& n, const std::string& key, const ParamSchema& p) const {

@@ -1,5 +1,6 @@
 #include "driver/SchemaReference.h"
 #include "plugins/scene/Format.h"
+#include "plugins/scene/Schedule.h"
 
 #include <map>
 #include <sstream>
@@ -18,7 +19,7 @@ std::string kindName(const ParamSchema& p) {
         case ParamKind::BodyPair: return "[from body, to body]";
         case ParamKind::BodyList: return "list of body names";
         case ParamKind::QuantityList: return "list of numbers";
-        case ParamKind::Text: return "text";
+        case ParamKind::Text: return isScheduleParam(p) ? "schedule {ramp|step_recovery|sine|table: ...}" : "text";
     }
     return "?";
 }
@@ -71,7 +72,13 @@ nlohmann::json paramJson(const ParamSchema& p) {
             break;
         case ParamKind::BodyRef:
         case ParamKind::Text:
-            j["type"] = "string";
+            if (isScheduleParam(p)) {
+                j["type"] = "object";
+                j["minProperties"] = 1;
+                j["maxProperties"] = 1;
+            } else {
+                j["type"] = "string";
+            }
             break;
         case ParamKind::BodyPair:
             j["type"] = "array";

@@ -11,6 +11,7 @@
 #include "driver/Simulation.h"
 #include "driver/Sweep.h"
 #include "driver/Units.h"
+#include "plugins/scene/Schedule.h"
 #include "driver/outputs/AtomicFile.h"
 #include "plugins/scene/ElementRegistry.h"
 #include "validation/cases/ValidationCases.h"
@@ -122,7 +123,7 @@ py::dict schemaDict(const ElementSchema& s) {
     py::dict keys;
     for (const auto& p : s.params) {
         py::dict k;
-        k["kind"] = kindName(p.kind);
+        k["kind"] = isScheduleParam(p) ? "schedule" : kindName(p.kind);
         const bool numeric = p.kind == ParamKind::Quantity || p.kind == ParamKind::QuantityList;
         k["unit"] = numeric ? py::object(py::str(p.unit)) : py::object(py::none());
         k["required"] = p.required;

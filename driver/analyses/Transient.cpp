@@ -35,6 +35,50 @@ std::string probeNames(const Scene& scene, ProbeRole role) {
 
 std::string fmt(double v) { return formatNumber(v, 4); }
 
+std::vector<std::size_t> probesOfRole(const Scene& scene, ProbeRole role) {
+    std::vector<std::size_t> out;
+    for (std::size_t i = 0; i < scene.probes().size(); ++i)
+        if (scene.probes()[i].role == role) out.push_back(i);
+    return out;
+}
+
+/// How many shafts the probes of `role` act on (a probe whose shaft is not
+/// known counts as one of its own).
+std::size_t distinctShafts(const ModelSpec& spec, const Scene& scene, ProbeRole role) {
+    std::vector<std::string> shafts;
+    for (std::size_t i : probesOfRole(scene, role)) {
+        const std::string& name = scene.probes()[i].name;
+        std::string shaft = probeShaft(spec, name);
+        if (shaft.empty()) shaft = "?" + name;
+        if (std::find(shafts.begin(), shafts.end(), shaft) == shafts.end()) shafts.push_back(shaft);
+    }
+    return shafts.size();
+}
+
+/// `key` (+ suffix): the sum of the torques of `role` when they all act on
+/// one shaft; else `key`.<probe> for each, on its own shaft, and no sum.
+void addTorqueLines(const Scene& scene, const ModelSpec& spec, const SimTK::State& state, ProbeRole role,
+                    const std::string& key, const std::string& suffix, const std::string& what,
+                    const std::string& at, AnalysisResult& result) {
+    const std::string shafts = probeShafts(spec, scene, role);
+    if (distinctShafts(spec, scene, role) <= 1) {
+        result.results.push_back({key + suffix, sumProbes(scene, state, role), "N*m",
+                                  what + " " + at + (shafts.empty() ? std::string() : " on " + shafts) + " (" +
+                                      probeNames(scene, role) + (probesOfRole(scene, role).size() > 1 ? ", summed" : "") +
+                                      ")",
+                                  shafts});
+        return;
+    }
+    for (std::size_t i : probesOfRole(scene, role)) {
+        const Probe& p = scene.probes()[i];
+        const std::string shaft = probeShaft(spec, p.name);
+        result.results.push_back({key + suffix + "." + p.name, p.value(state), "N*m",
+                                  what + " " + p.name + " " + at + " on " + shaft +
+                                      " (torques on different shafts: not added)",
+                                  shaft});
+    }
+}
+
 /// Whether speed_body held its speed over the last hold window before the
 /// first switch-off (or the end), with the numbers the verdicts quote.
 struct HoldCheck {
@@ -381,7 +425,15 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     // located inside the steps), never from the output rows: the drive
     // torque's sum, every coupling and every outputs.peaks probe.
     const auto& probes = scene->probes();
+    // Torques on different shafts never add (issue 32): one drive peak per
+    // drive when the drives are on several shafts.
+    const std::vector<std::size_t> driveProbes = probesOfRole(*scene, ProbeRole::DriveTorque);
+    const bool drivesOnOneShaft = distinctShafts(spec, *scene, ProbeRole::DriveTorque) <= 1;
     PeakTracker peakDrive([&](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::DriveTorque); });
+    std::vector<PeakTracker> drivePeaks;
+    if (!drivesOnOneShaft)
+        for (std::size_t i : driveProbes)
+            drivePeaks.emplace_back([&probes = scene->probes(), i](const SimTK::State& s) { return probes[i].value(s); });
     std::vector<std::optional<PeakTracker>> peaks(probes.size());
     for (std::size_t i = 0; i < probes.size(); ++i)
         if (probes[i].role == ProbeRole::CouplingTorque ||
@@ -396,6 +448,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         const double t = s.getTime();
         trace.add(t, pinSpeed(s, speedBody.mobod), speedBody.mobod.getOneUDot(s, SimTK::MobilizerUIndex(0)));
         peakDrive.step(sim, s);
+        for (auto& p : drivePeaks) p.step(sim, s);
         for (auto& p : peaks)
             if (p) p->step(sim, s);
         // A sequence's end located inside the step (bisection on the
@@ -466,29 +519,39 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     const std::string suffix = reached ? "" : "_at_end";
     result.results.push_back({reached ? "steady_speed" : "speed_at_end", omega, "rad/s",
                               "speed of " + speedBody.name + " " + at});
-    const std::string loadShafts = probeShafts(spec, *scene, ProbeRole::ResistanceTorque);
     const std::string driveShafts = probeShafts(spec, *scene, ProbeRole::DriveTorque);
-    result.results.push_back({"resistance_torque" + suffix, sumProbes(*scene, steady, ProbeRole::ResistanceTorque),
-                              "N*m",
-                              "sum of load torques " + at + ", each on its own shaft (" +
-                                  probeNames(*scene, ProbeRole::ResistanceTorque) + ")",
-                              loadShafts});
+    // A torque is reported on its shaft: loads (drives) on one shaft are
+    // summed, loads on several shafts are each reported alone, never added
+    // (a torque on the table and one on the motor shaft have no sum).
+    addTorqueLines(*scene, spec, steady, ProbeRole::ResistanceTorque, "resistance_torque", suffix, "load torque",
+                   at, result);
     result.results.push_back({"power" + suffix, sumProbes(*scene, steady, ProbeRole::ResistancePower), "W",
-                              "power absorbed by the loads " + at});
+                              "power absorbed by the loads " + at + ", measured at each load's own shaft and summed (" +
+                                  probeNames(*scene, ProbeRole::ResistancePower) +
+                                  "); friction, damping and brake heat are not in it (mean_power.*)"});
     if (windowCopied)
         addMeanPower(*scene, windowStart, steady,
                      "the last " + fmt(steady.getTime() - windowStart.getTime()) + " s " +
                          (switched ? "before switch-off" : "of the run") + " (" + fmt(windowStart.getTime()) + " to " +
                          fmt(steady.getTime()) + " s)",
                      result);
-    result.results.push_back({"drive_torque" + suffix, sumProbes(*scene, steady, ProbeRole::DriveTorque), "N*m",
-                              "sum of drive torques " + at + ", each on its own shaft (" +
-                                  probeNames(*scene, ProbeRole::DriveTorque) + ")",
-                              driveShafts});
-    result.results.push_back({"peak_drive_torque", peakDrive.peak(), "N*m",
-                              "largest |drive torque| of the run (" + probeNames(*scene, ProbeRole::DriveTorque) +
-                                  "), over every integration step, maxima located inside the steps",
-                              driveShafts});
+    addTorqueLines(*scene, spec, steady, ProbeRole::DriveTorque, "drive_torque", suffix, "drive torque", at, result);
+    if (drivesOnOneShaft)
+        result.results.push_back({"peak_drive_torque", peakDrive.peak(), "N*m",
+                                  "largest |drive torque| of the run (" + probeNames(*scene, ProbeRole::DriveTorque) +
+                                      (driveShafts.empty() ? std::string() : " on " + driveShafts) +
+                                      "), over every integration step, maxima located inside the steps",
+                                  driveShafts});
+    else
+        for (std::size_t k = 0; k < driveProbes.size(); ++k) {
+            const Probe& p = scene->probes()[driveProbes[k]];
+            const std::string shaft = probeShaft(spec, p.name);
+            result.results.push_back({"peak_drive_torque." + p.name, drivePeaks[k].peak(), "N*m",
+                                      "largest |" + p.name + "| of the run on " + shaft +
+                                          ", over every integration step, maxima located inside the steps (drives "
+                                          "on different shafts: not added)",
+                                      shaft});
+        }
     // Couplings sit on shafts of different speeds: one peak each.
     for (std::size_t i = 0; i < scene->probes().size(); ++i)
         if (scene->probes()[i].role == ProbeRole::CouplingTorque) {

@@ -24,6 +24,9 @@ Brake::Brake(const SimTK::MobilizedBody& shaft, const BrakeParams& p) : m_shaft(
 double Brake::torqueAt(double omega, double t) const {
     if (m_params.mode == BrakeParams::Mode::Backstop)
         return -calcFrictionTorque(m_params.capacity, std::min(omega, 0.0), m_params.regularisationSpeed);
+    if (!m_params.schedule.isConstant())
+        return -calcFrictionTorque(m_params.capacity * m_params.schedule.factorAt(t), omega,
+                                   m_params.regularisationSpeed);
     if (!std::isfinite(m_params.applyTime)) return 0;
     return -calcFrictionTorque(m_params.capacity * rampFraction(t, m_params.applyTime, m_params.rampTime), omega,
                                m_params.regularisationSpeed);
@@ -46,6 +49,8 @@ void buildBrake(const ElementSpec& spec, Scene& scene) {
     p.applyTime = spec.number("apply_time");
     p.rampTime = spec.number("ramp_time");
     p.regularisationSpeed = spec.number("regularisation_speed");
+    p.schedule = Schedule::fromSpec(spec);
+    addScheduleBreakpoints(scene, p.schedule, spec.name);
     auto* impl = new Brake(shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
@@ -77,8 +82,15 @@ void registerBrake(ElementRegistry& registry) {
             .atLeast(0),
         P::quantity("ramp_time", "s", "brake: torque ramp from 0 to full").optional(0.1).above(0),
         P::quantity("regularisation_speed", "rad/s", "speed regularisation ω_reg").optional(1e-3).above(0),
+        scheduleParam("schedule", "brake: f(t) multiplying the capacity: {ramp|step_recovery|sine|table: ...} "
+                                "(replaces apply_time and ramp_time)"),
     };
     s.crossCheck = [](const ElementSpec& e) {
+        if (e.has("schedule"))
+            for (const char* k : {"apply_time", "ramp_time"})
+                if (e.has(k)) throw e.error(k, "not used with schedule (the schedule is the whole application)");
+        if (e.text("mode") == "backstop" && e.has("schedule"))
+            throw e.error("schedule", "not used with mode backstop (it holds whenever the shaft turns back)");
         if (e.text("mode") == "backstop")
             for (const char* k : {"apply_time", "ramp_time"})
                 if (e.has(k)) throw e.error(k, "not used with mode backstop (it holds whenever the shaft turns back)");

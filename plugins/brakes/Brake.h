@@ -2,6 +2,8 @@
 // Brake: a friction brake (run-out) or a backstop (no roll-back) between a
 // shaft and the ground.
 
+#include "plugins/scene/Schedule.h"
+
 #include <Simbody.h>
 
 #include <limits>
@@ -19,6 +21,9 @@ struct BrakeParams {
     double rampTime = 0.1;
     /// Speed regularisation ω_reg [rad/s], > 0.
     double regularisationSpeed = 1e-3;
+    /// Brake: f(t) multiplying the capacity; when not constant it replaces
+    /// the ramp (applyTime, rampTime).
+    Schedule schedule;
 };
 
 /**
@@ -26,6 +31,7 @@ struct BrakeParams {
  *
  * <pre>
  *   brake:    T = −M_b·r(t)·tanh(ω/ω_reg),  r(t) = min(max((t − t_a)/T_r, 0), 1)
+ *             or r(t) = the `schedule` (Schedule.h), its breakpoints located
  *   backstop: T = −M_b·tanh(min(ω, 0)/ω_reg)   (free forwards, holds backwards)
  *   heat      P = −T·ω >= 0                     (an EnergyFlow dissipation)
  * </pre>

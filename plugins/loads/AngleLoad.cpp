@@ -209,6 +209,7 @@ void AngleLoad::setExcitationOn(SimTK::State& s, bool on) const {
 
 void AngleLoad::calcValues(const SimTK::State& s, Values& out) const {
     const bool excited = isExcitationOn(s);
+    const double scheduled = m_params.schedule.factorAt(s.getTime());
     const std::size_t n = m_bodies.size();
     out.torques.resize(n);
     out.psi.resize(n);
@@ -218,7 +219,7 @@ void AngleLoad::calcValues(const SimTK::State& s, Values& out) const {
         const double omega = m_bodies[j].getOneU(s, SimTK::MobilizerUIndex(0));
         const double psi = cycleAngle(static_cast<int>(j), theta);
         const double sign = std::tanh(omega / m_params.smoothingSpeed);
-        const double crushing = (excited ? shapeValue(psi) : m_mean) * sign;
+        const double crushing = scheduled * (excited ? shapeValue(psi) : m_mean) * sign;
         const double M = crushing + (excited ? springTorque(psi) : 0.0);
         out.psi[j] = wrapCycle(psi);
         out.torques[j] = M;
@@ -295,6 +296,8 @@ void buildAngleLoad(const ElementSpec& spec, Scene& scene) {
     if (spec.has("spring_sine_amplitudes")) p.springSineAmplitudes = spec.numbers("spring_sine_amplitudes");
     p.smoothingSpeed = spec.number("smoothing_speed");
     p.listedHarmonics = static_cast<int>(spec.number("listed_harmonics"));
+    p.schedule = Schedule::fromSpec(spec);
+    addScheduleBreakpoints(scene, p.schedule, spec.name);
     auto* impl = new AngleLoad(scene.forces(), bodies, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
@@ -398,6 +401,7 @@ void registerAngleLoad(ElementRegistry& registry) {
             .optional(0.01).above(0),
         P::quantity("listed_harmonics", "1", "harmonics reported and registered as excitation orders")
             .optional(6.0).atLeast(1).atMost(kAngleLoadHarmonics),
+        scheduleParam("schedule", "f(t) multiplying the crushing part g: {ramp|step_recovery|sine|table: ...} (default 1)"),
     };
     s.crossCheck = [](const ElementSpec& e) {
         if (e.number("cycles_per_revolution") != std::floor(e.number("cycles_per_revolution")))

@@ -3,6 +3,8 @@
 // crushing stroke, a piston machine's cylinders): its torque repeats every
 // 1/n of a revolution of the shaft, whatever the speed.
 
+#include "plugins/scene/Schedule.h"
+
 #include <Simbody.h>
 
 #include <vector>
@@ -40,6 +42,9 @@ struct AngleLoadParams {
     double smoothingSpeed = 0.01;
     /// Harmonics reported as derived values and as excitation orders.
     int listedHarmonics = 6;
+    /// f(t) multiplying the crushing (dissipative) part; the conservative
+    /// part is not scheduled (its potential stays a function of angle).
+    Schedule schedule;
 };
 
 /**
@@ -59,6 +64,7 @@ struct AngleLoadParams {
  *   conservative part   c(ψ) = Σ_k (p_k cos kψ + q_k sin kψ)
  *   potential energy    V = Σ_j (1/n)·Σ_k (p_k sin kψ_j − q_k cos kψ_j)/k,
  *                       so that dV/dθ_j = c(ψ_j): zero mean over a cycle
+ *   scheduled           the dissipative part times f(t), the `schedule` (Schedule.h)
  * </pre>
  *
  * The dissipative part is crushing: it opposes the motion and at ω = 0 it

@@ -90,6 +90,7 @@ void PeriodicLoad::calcValues(const SimTK::State& s, Values& out) const {
     if (excited)
         for (std::size_t g = 0; g < m_phases.size(); ++g)
             out.phaseParts[g] = calcSineSeries(m_params.fundamentalFrequency * s.getTime() + m_phases[g]);
+    const double scheduled = m_params.schedule.factorAt(s.getTime());
     out.rowTorques.resize(m_params.rows);
     out.totalTorque = 0;
     out.absorbedPower = 0;
@@ -97,6 +98,7 @@ void PeriodicLoad::calcValues(const SimTK::State& s, Values& out) const {
         const int j = bodyOfRow(r);
         double M = out.bodyMeans[j];
         if (excited) M += out.phaseParts[m_phaseOfRow[r]];
+        M *= scheduled;
         out.rowTorques[r] = M;
         out.bodyTorques[j] += M;
         out.totalTorque += M;
@@ -147,6 +149,8 @@ void buildPeriodicLoad(const ElementSpec& spec, Scene& scene) {
     p.staggered = spec.text("arrangement") == "staggered";
     if (spec.has("phases")) p.phases = spec.numbers("phases");
     p.smoothingSpeed = spec.number("smoothing_speed");
+    p.schedule = Schedule::fromSpec(spec);
+    addScheduleBreakpoints(scene, p.schedule, spec.name);
     auto* impl = new PeriodicLoad(scene.forces(), bodies, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
@@ -182,6 +186,7 @@ void registerPeriodicLoad(ElementRegistry& registry) {
             .optional(std::string()),
         P::quantity("smoothing_speed", "rad/s", "regularisation width of the mean at standstill")
             .optional(0.01).above(0),
+        scheduleParam("schedule", "f(t) multiplying every row's torque: {ramp|step_recovery|sine|table: ...} (default 1)"),
     };
     s.crossCheck = [](const ElementSpec& e) {
         const double rows = e.number("rows");

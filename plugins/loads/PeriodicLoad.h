@@ -2,6 +2,8 @@
 // PeriodicLoad: the crushing torque of sprocket rows, a mean plus a Fourier
 // series in time, with a phase per row.
 
+#include "plugins/scene/Schedule.h"
+
 #include <Simbody.h>
 
 #include <vector>
@@ -26,6 +28,8 @@ struct PeriodicLoadParams {
     std::vector<double> phases;
     /// Width ωs of the regularisation of the mean near standstill [rad/s], > 0.
     double smoothingSpeed = 0.01;
+    /// f(t) multiplying every row's torque (mean and harmonics).
+    Schedule schedule;
 };
 
 /**
@@ -36,6 +40,7 @@ struct PeriodicLoadParams {
  *   φ_r = 2π·r/n (staggered), 0 (in phase), or as listed (`phases:`, one per row)
  *   body j gets −Σ_{rows r on j} M_r(t)
  *   rows on bodies: n bodies → one row each; one body → all n rows on it
+ *   scheduled: every M_r(t) times f(t), the `schedule` (Schedule.h)
  * </pre>
  *
  * Eq (13) writes the row loads as time shifts of one another,

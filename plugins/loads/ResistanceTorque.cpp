@@ -54,7 +54,8 @@ void ResistanceTorque::realizeTopology(SimTK::State& s) const {
 }
 
 double ResistanceTorque::calcTorque(const SimTK::State& s) const {
-    return torqueAtSpeed(m_shaft.getOneU(s, SimTK::MobilizerUIndex(0)), isFeeding(s));
+    return m_params.schedule.factorAt(s.getTime()) *
+           torqueAtSpeed(m_shaft.getOneU(s, SimTK::MobilizerUIndex(0)), isFeeding(s));
 }
 
 void ResistanceTorque::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&,
@@ -77,6 +78,7 @@ void buildResistanceTorque(const ElementSpec& spec, Scene& scene) {
     p.reductionRatio = spec.number("reduction_ratio");
     p.smoothingSpeed = spec.number("smoothing_speed");
     p.feedStartTime = spec.number("feed_start_time");
+    p.schedule = Schedule::fromSpec(spec);
     auto* impl = new ResistanceTorque(scene.forces(), shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
@@ -93,8 +95,10 @@ void buildResistanceTorque(const ElementSpec& spec, Scene& scene) {
     if (p.feedStartTime > 0)
         scene.addSwitchEvent({Scene::SwitchEvent::Kind::LoadOn, p.feedStartTime, spec.name + " feed opened",
                               [impl](SimTK::State& s) { impl->setFeeding(s, true); }});
+    addScheduleBreakpoints(scene, p.schedule, spec.name);
     scene.note("force " + spec.name + " (ResistanceTorque, " + spec.text("law") + ")",
-               "loads body " + shaft->name);
+               "loads body " + shaft->name +
+                   (p.schedule.isConstant() ? "" : "; torque times the schedule: " + p.schedule.describe()));
 }
 
 }  // namespace
@@ -118,6 +122,7 @@ void registerResistanceTorque(ElementRegistry& registry) {
             .optional(0.01).above(0),
         P::quantity("feed_start_time", "s", "feed law: the feed opens at this time (mill started empty)")
             .optional(0.0).atLeast(0),
+        scheduleParam("schedule", "f(t) multiplying the torque: {ramp|step_recovery|sine|table: ...} (default 1)"),
     };
     registry.add({std::move(s), buildResistanceTorque});
 }

@@ -2,6 +2,8 @@
 // ResistanceTorque: the load a working organ (millstone, drum, rotor) puts
 // on its shaft.
 
+#include "plugins/scene/Schedule.h"
+
 #include <Simbody.h>
 
 namespace milldyn {
@@ -29,6 +31,9 @@ struct ResistanceTorqueParams {
     /// Feed law: time the feed is opened [s], >= 0; before it only the
     /// idle part acts (a mill is started empty).
     double feedStartTime = 0;
+    /// f(t) multiplying the whole torque (roller lowering, a bed collapse);
+    /// constant 1 by default.
+    Schedule schedule;
 };
 
 /**
@@ -41,6 +46,8 @@ struct ResistanceTorqueParams {
  *   the shaft gets −Mc as a mobility force; absorbed power Mc·ω >= 0
  *   before feed_start_time the feed term is absent (discrete state, so the
  *   opening of the feed is an integrator restart, not a jump inside a step)
+ *   scheduled:  the shaft gets −f(t)·Mc(ω), f the `schedule` (Schedule.h),
+ *               whose breakpoints the integrator stops at
  * </pre>
  *
  * A Coulomb-like constant torque has no value at ω = 0; tanh(ω/ωs) makes it
@@ -58,7 +65,7 @@ public:
                      const ResistanceTorqueParams& params);
 
     /// The torque magnitude at shaft speed ω [rad/s] with the feed on or
-    /// off (positive when ω > 0) [N*m].
+    /// off (positive when ω > 0), before the schedule's factor [N*m].
     double torqueAtSpeed(double omega, bool feeding = true) const;
     /// The constant part the law gives away from standstill, feeding [N*m].
     double constantPart() const { return m_idle + m_feedPart; }

@@ -24,6 +24,7 @@ void registerClutch(ElementRegistry& registry);
 void registerBrake(ElementRegistry& registry);
 void registerAngleLoad(ElementRegistry& registry);
 void registerBreakawayResistance(ElementRegistry& registry);
+void registerAppliedTorque(ElementRegistry& registry);
 
 void registerBuiltinElements(ElementRegistry& registry) {
     registerInductionMotor(registry);
@@ -48,6 +49,7 @@ void registerBuiltinElements(ElementRegistry& registry) {
     registerBrake(registry);
     registerAngleLoad(registry);
     registerBreakawayResistance(registry);
+    registerAppliedTorque(registry);
 }
 
 }  // namespace milldyn

@@ -35,7 +35,7 @@ std::string energyCategoryLabel(EnergyCategory c) {
     switch (c) {
         case EnergyCategory::MotorInput:
             return "drive input: the motors' electrical input (their air-gap power where no rated_efficiency is "
-                   "given), a prescribed drive's work";
+                   "given), a prescribed drive's work, a torque source's (AppliedTorque) work";
         case EnergyCategory::MotorLoss:
             return "motor loss: heat in the motors (rotor copper loss; stator copper and no-load loss where a "
                    "rated_efficiency is given; a dq machine's stator and rotor copper loss)";

@@ -499,7 +499,7 @@ TEST(PeriodicLoadRegistryTest, SchemaListsTheDocumentedKeys) {
     std::set<std::string> keys;
     for (const auto& p : schema.params) keys.insert(p.key);
     EXPECT_EQ(keys, (std::set<std::string>{"bodies", "rows", "mean_torque", "amplitudes",
-                                           "fundamental_frequency", "arrangement", "phases", "smoothing_speed"}));
+                                           "fundamental_frequency", "arrangement", "phases", "smoothing_speed", "schedule"}));
     EXPECT_EQ(schema.find("bodies")->kind, ParamKind::BodyList);
     EXPECT_EQ(schema.find("amplitudes")->kind, ParamKind::QuantityList);
     EXPECT_EQ(schema.find("amplitudes")->unit, "N*m");

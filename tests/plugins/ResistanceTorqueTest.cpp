@@ -382,7 +382,7 @@ TEST(ResistanceTorqueRegistryTest, SchemaListsTheDocumentedKeys) {
     EXPECT_EQ(keys, (std::set<std::string>{"body", "law", "constant_torque", "viscous_coefficient",
                                            "feed_rate", "feed_coefficient", "feed_exponent",
                                            "reduction_ratio", "smoothing_speed",
-                                           "feed_start_time"}));
+                                           "feed_start_time", "schedule"}));
     EXPECT_EQ(schema.find("law")->choices, (std::vector<std::string>{"speed_linear", "feed"}));
     EXPECT_EQ(schema.find("law")->defaultText, "speed_linear");
     EXPECT_EQ(schema.find("feed_rate")->unit, "kg/s");
