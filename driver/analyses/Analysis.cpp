@@ -114,6 +114,11 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
         P::body("reference_shaft", "mode shapes referred to this shaft: amplitudes times the speed ratio to it "
                                    "(default: each body's own angle)")
             .optional(""),
+        P::choice("motor_model", {"dq_states", "frozen_flux", "static_slope"},
+                  "how DqInductionMotor fluxes enter the linear model: dq_states (their flux states, electrical "
+                  "damping), frozen_flux (held: no electrical damping), static_slope (the steady torque-speed "
+                  "slope); InductionMotor is its static slope in all three")
+            .optional("dq_states"),
     };
     schemas["linearize"] = linearize;
 
@@ -149,6 +154,11 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
         P::quantity("check_periods", "1", "forcing periods fitted in each time check").optional(20.0).atLeast(1),
         P::quantity("settle_time", "s", "time for transients to decay before fitting (0: from the slowest "
                                          "eigenvalue)").optional(0.0).atLeast(0),
+        P::choice("motor_model", {"dq_states", "frozen_flux", "static_slope"},
+                  "how DqInductionMotor fluxes enter the linear model: dq_states (their flux states, electrical "
+                  "damping), frozen_flux (held: no electrical damping), static_slope (the steady torque-speed "
+                  "slope); InductionMotor is its static slope in all three")
+            .optional("dq_states"),
     };
     response.crossCheck = [](const ElementSpec& e) {
         if (e.number("frequency_max") <= e.number("frequency_min"))
@@ -191,6 +201,11 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
             .above(0),
         P::quantity("threshold", "1", "dynamic factor above which a speed band is to be avoided")
             .optional(1.3).above(0),
+        P::choice("motor_model", {"dq_states", "frozen_flux", "static_slope"},
+                  "how DqInductionMotor fluxes enter the linear model: dq_states (their flux states, electrical "
+                  "damping), frozen_flux (held: no electrical damping), static_slope (the steady torque-speed "
+                  "slope); InductionMotor is its static slope in all three")
+            .optional("dq_states"),
     };
     map.crossCheck = [](const ElementSpec& e) {
         if (e.number("speed_max") <= e.number("speed_min")) throw e.error("speed_max", "must exceed speed_min");

@@ -66,7 +66,9 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     const SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
     // Rigid meshes (GearPair, GearMesh, PlanetaryGearSet, BeltDrive) are
     // reduced to independent coordinates, as linearize does.
-    const LinearModel lm = linearizeScene(*scene, steady, true, true);
+    // The dq machines' fluxes as scenario.motor_model says (default their states).
+    const LinearModel lm =
+        linearizeScene(*scene, steady, true, true, motorModelFromName(sc.text("motor_model")));
     const PeriodicLoad& load = findPeriodicLoad(*scene, spec);
     const int k = static_cast<int>(sc.number("harmonic"));
     const LoadResponse response(*scene, lm, load);
@@ -75,7 +77,7 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     auto linearOutput = [&](double P, int probe) { return response.output(P, k, probe); };
 
     AnalysisResult result;
-    if (const std::string note = motorDampingNote(*scene, lm); !note.empty()) result.notes.push_back(note);
+    result.notes = motorDampingNotes(*scene, lm);
     result.derived = derivedResults(*scene);
     result.analysis = "frequency_response";
     result.tableName = "frequency_response";
@@ -290,6 +292,12 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
         if (progress) progress(double(c + 1), double(checks.size()));
     }
     if (!checks.empty()) result.extraTables.push_back(table);
+    if (!checks.empty() && lm.Afull.size() && lm.motorModel != MotorModel::DqStates)
+        result.notes.push_back(std::string("the time checks integrate the dq machines with their fluxes, the linear "
+                                           "response here is motor_model ") +
+                               motorModelName(lm.motorModel) +
+                               ": their differences include that model's error (motor_model dq_states is the "
+                               "linearization of what is simulated)");
     if (compared > 0) {
         result.results.push_back({"time_check_amplitude_rel_diff", worstAmplitude, "1",
                                   "largest |simulated − linear|/linear amplitude over the checks"});

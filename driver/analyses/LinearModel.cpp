@@ -1,11 +1,15 @@
 #include "driver/analyses/LinearModel.h"
 
 #include "driver/Simulation.h"
+#include "driver/analyses/Analysis.h"
 #include "plugins/motors/DqInductionMotor.h"
+#include "plugins/motors/InductionMotor.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <tuple>
 
 namespace milldyn {
 
@@ -143,8 +147,24 @@ void calcIndependentBasis(const Scene& scene, const SimTK::State& x0, LinearMode
 
 }  // namespace
 
+const char* motorModelName(MotorModel model) {
+    switch (model) {
+        case MotorModel::DqStates: return "dq_states";
+        case MotorModel::FrozenFlux: return "frozen_flux";
+        case MotorModel::StaticSlope: return "static_slope";
+    }
+    return "";
+}
+
+MotorModel motorModelFromName(const std::string& word) {
+    if (word == "frozen_flux") return MotorModel::FrozenFlux;
+    if (word == "static_slope") return MotorModel::StaticSlope;
+    if (word == "dq_states") return MotorModel::DqStates;
+    throw AnalysisError("motor_model: '" + word + "' is not one of dq_states, frozen_flux, static_slope");
+}
+
 LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes,
-                           bool reduceConstraints) {
+                           bool reduceConstraints, MotorModel motorModel) {
     const SimTK::System& system = scene.system();
     SimTK::State x0 = operatingPoint;
     scene.setExcitationsOn(x0, false);
@@ -254,6 +274,8 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     lm.A.topRightCorner(r, r) = Eigen::MatrixXd::Identity(r, r);
     lm.A.bottomLeftCorner(r, r) = dVdq;
     lm.A.bottomRightCorner(r, r) = dVdu;
+    lm.motorModel = motorModel;
+    lm.outputZ = Eigen::MatrixXd::Zero(np, nz);
     if (nz > 0) {
         // The states' own columns: ∂u̇/∂z and ∂ż/∂z by central differences,
         // the step scaled to the element's largest state.
@@ -262,16 +284,17 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
         for (int i = 0; i < nz; ++i) zScale = std::max(zScale, std::abs(x0.getZ()[zIndex[i]]));
         const double h = 1e-6 * (zScale > 0 ? zScale : 1.0);
         for (int k = 0; k < nz; ++k) {
-            Eigen::VectorXd up, um, zp;
+            Eigen::VectorXd up, um, zp, op;
             for (double sign : {1.0, -1.0}) {
                 SimTK::State s = x0;
                 s.updZ()[zIndex[k]] += sign * h;
                 system.realize(s, SimTK::Stage::Acceleration);
-                Eigen::VectorXd ud(n), zd(nz);
+                Eigen::VectorXd ud(n), zd(nz), od(np);
                 for (int i = 0; i < n; ++i) ud[i] = s.getUDot()[i];
                 for (int i = 0; i < nz; ++i) zd[i] = s.getZDot()[zIndex[i]];
-                if (sign > 0) up = ud, zp = zd;
-                else um = ud, dZdz.col(k) = (zp - zd) / (2 * h);
+                for (int p = 0; p < np; ++p) od[p] = probes[p].value(s);
+                if (sign > 0) up = ud, zp = zd, op = od;
+                else um = ud, dZdz.col(k) = (zp - zd) / (2 * h), lm.outputZ.col(k) = (op - od) / (2 * h);
             }
             dUdz.col(k) = (up - um) / (2 * h);
         }
@@ -289,6 +312,24 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
         lm.Afull.block(2 * r, 0, nz, r) = dZdq;
         lm.Afull.block(2 * r, r, nz, r) = dZdu;
         lm.Afull.bottomRightCorner(nz, nz) = dZdz;
+        // Static slope: the fluxes at their steady state for the momentary
+        // q, u (ż̃ = 0 in the supply's frame): z̃ = −A_zz⁻¹·A_zm·[q; u], which
+        // turns the mechanical rows into A_mm − A_mz·A_zz⁻¹·A_zm. A_zz is
+        // the machine's electrical matrix at the slip of the operating point,
+        // invertible with resistances in both windings.
+        const Eigen::PartialPivLU<Eigen::MatrixXd> zz(dZdz);
+        const Eigen::MatrixXd elim = zz.solve(lm.Afull.bottomLeftCorner(nz, 2 * r));  // A_zz⁻¹·A_zm
+        lm.Afrozen = lm.A;
+        lm.Astatic = lm.A - lm.Afull.topRightCorner(2 * r, nz) * elim;
+        if (motorModel == MotorModel::StaticSlope) {
+            lm.A = lm.Astatic;
+            lm.K = -lm.M * lm.A.bottomLeftCorner(r, r);
+            lm.C = -lm.M * lm.A.bottomRightCorner(r, r);
+            const Eigen::MatrixXd outElim = lm.outputZ * elim;
+            lm.outputQ -= outElim.leftCols(r);
+            lm.outputU -= outElim.rightCols(r);
+            lm.outputZ.setZero();
+        }
     }
     lm.bodyNames = mobilityNames(scene, x0);
     for (int j : lm.independent) lm.dofNames.push_back(lm.bodyNames[j]);
@@ -309,7 +350,12 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
         return Eigen::VectorXcd(Eigen::Map<Eigen::VectorXcd>(ev.data(), A.rows()));
     };
     lm.eigenvalues = sortedEigenvalues(lm.A);
-    if (nz > 0) lm.eigenvaluesFull = sortedEigenvalues(lm.Afull);
+    if (nz > 0) {
+        lm.eigenvaluesFull = sortedEigenvalues(lm.Afull);
+        lm.eigenvaluesFrozen = sortedEigenvalues(lm.Afrozen);
+        lm.eigenvaluesStatic = sortedEigenvalues(lm.Astatic);
+        if (motorModel == MotorModel::DqStates) lm.eigenvalues = lm.eigenvaluesFull;
+    }
 
     calcUndampedModes(lm);
     return lm;
@@ -320,32 +366,151 @@ bool isRigidEigenvalue(const LinearModel& model, std::complex<double> lambda) {
     return std::abs(lambda) <= std::max(1e-9 * scale, model.frequencyFloor);
 }
 
-std::string motorDampingNote(const Scene& scene, const LinearModel& lm) {
-    auto ratios = [](const Eigen::VectorXcd& ev) {
-        std::string out;
-        for (Eigen::Index i = 0; i < ev.size(); ++i)
-            if (ev[i].imag() > 0)
-                out += (out.empty() ? "" : ", ") + std::to_string(ev[i].imag() / (2 * M_PI)).substr(0, 7) + " Hz: " +
-                       std::to_string(-ev[i].real() / std::abs(ev[i])).substr(0, 6);
-        return out.empty() ? std::string("none") : out;
-    };
-    bool staticMotor = false;
-    for (const auto& p : scene.probes()) staticMotor = staticMotor || p.role == ProbeRole::DriveTorque;
-    if (lm.Afull.size() == 0)
-        return staticMotor ? "motor model of the damping: each drive's static torque-speed slope at the operating point"
-                           : "";
-    return "motor model of the damping: the dq machines' fluxes frozen (no electrical damping; InductionMotor elements "
-           "as their static slope) — damping ratios so (frequency: ratio) " + ratios(lm.eigenvalues) +
-           "; with the dq machines' flux states " + ratios(lm.eigenvaluesFull) +
-           " (linearize's eigenvalues_with_motor_states); the response here uses the first";
+namespace {
+
+/// For each oscillating eigenvalue (imag > 0, not rigid) of `frozen`, the
+/// nearest one of `other` (oscillating, or real: overdamped) not taken yet (greedy, closest pairs
+/// first); -1 where `other` has none left.
+std::vector<int> matchModes(const LinearModel& lm, const Eigen::VectorXcd& frozen, const Eigen::VectorXcd& other) {
+    std::vector<int> from, to;
+    for (Eigen::Index i = 0; i < frozen.size(); ++i)
+        if (frozen[i].imag() > 0 && !isRigidEigenvalue(lm, frozen[i])) from.push_back(int(i));
+    for (Eigen::Index j = 0; j < other.size(); ++j)
+        if (other[j].imag() >= 0 && !isRigidEigenvalue(lm, other[j])) to.push_back(int(j));  // overdamped too
+    std::vector<std::tuple<double, int, int>> pairs;
+    for (std::size_t a = 0; a < from.size(); ++a)
+        for (int j : to) pairs.emplace_back(std::abs(frozen[from[a]] - other[j]), int(a), j);
+    std::sort(pairs.begin(), pairs.end());
+    std::vector<int> match(from.size(), -1);
+    std::vector<bool> used(other.size(), false);
+    for (const auto& [d, a, j] : pairs)
+        if (match[a] < 0 && !used[j]) match[a] = j, used[j] = true;
+    return match;
 }
 
-Eigen::VectorXcd harmonicResponse(const LinearModel& model, double P, const Eigen::VectorXcd& force) {
+std::vector<int> oscillating(const LinearModel& lm, const Eigen::VectorXcd& ev) {
+    std::vector<int> out;
+    for (Eigen::Index i = 0; i < ev.size(); ++i)
+        if (ev[i].imag() > 0 && !isRigidEigenvalue(lm, ev[i])) out.push_back(int(i));
+    return out;
+}
+
+double dampingRatio(std::complex<double> l) { return -l.real() / std::abs(l); }
+
+std::string formatted(double v, int digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    return text;
+}
+
+}  // namespace
+
+DataTable modeDampingTable(const LinearModel& lm) {
+    DataTable t{"mode_damping_by_motor_model",
+                {"mode", "frequency_frozen_flux", "damping_ratio_frozen_flux", "frequency_static_slope",
+                 "damping_ratio_static_slope", "frequency_dq_states", "damping_ratio_dq_states"},
+                {"1", "Hz", "1", "Hz", "1", "Hz", "1"},
+                {}};
+    if (lm.Afull.size() == 0) {
+        t.name.clear();
+        return t;
+    }
+    const std::vector<int> modes = oscillating(lm, lm.eigenvaluesFrozen);
+    const std::vector<int> toStatic = matchModes(lm, lm.eigenvaluesFrozen, lm.eigenvaluesStatic);
+    const std::vector<int> toFull = matchModes(lm, lm.eigenvaluesFrozen, lm.eigenvaluesFull);
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+        // A mode none of the other models has (more oscillating modes than
+        // they have eigenvalues left) gets no row.
+        if (toStatic[m] < 0 || toFull[m] < 0) continue;
+        const auto f = lm.eigenvaluesFrozen[modes[m]], st = lm.eigenvaluesStatic[toStatic[m]],
+                   fu = lm.eigenvaluesFull[toFull[m]];
+        std::vector<double> row = {double(m + 1), f.imag() / (2 * M_PI), dampingRatio(f), st.imag() / (2 * M_PI),
+                                   dampingRatio(st), fu.imag() / (2 * M_PI), dampingRatio(fu)};
+        t.rows.push_back(row);
+    }
+    return t;
+}
+
+std::vector<std::string> motorDampingNotes(const Scene& scene, const LinearModel& lm) {
+    std::vector<std::string> notes;
+    std::vector<std::string> dq = dqMachineNames(scene), statics;
+    for (const auto& p : scene.probes()) {
+        if (p.role != ProbeRole::DriveTorque || p.name.size() < 7) continue;
+        const std::string name = p.name.substr(0, p.name.size() - 7);
+        if (std::find(dq.begin(), dq.end(), name) == dq.end() && scene.findElement<InductionMotor>(name))
+            statics.push_back(name);
+    }
+    if (dq.empty() && statics.empty()) return notes;
+    auto list = [](const std::vector<std::string>& names) {
+        std::string out;
+        for (std::size_t i = 0; i < names.size(); ++i) out += (i ? ", " : "") + names[i];
+        return out;
+    };
+    std::string which = std::string("motor_model ") + motorModelName(lm.motorModel) + ": ";
+    if (!dq.empty()) {
+        which += list(dq) + (lm.motorModel == MotorModel::DqStates    ? " with their flux states (the electrical "
+                                                                        "damping and stiffness, and the machines' own "
+                                                                        "electrical modes)"
+                             : lm.motorModel == MotorModel::FrozenFlux ? " with their fluxes frozen (no electrical "
+                                                                         "damping)"
+                                                                       : " as their steady torque-speed slope at the "
+                                                                         "operating point (fluxes at steady state)");
+    }
+    if (!statics.empty())
+        which += (dq.empty() ? "" : "; ") + list(statics) +
+                 " (InductionMotor) as the static torque-speed slope at the operating point, in every motor model";
+    notes.push_back(which);
+    if (dq.empty()) return notes;
+    const DataTable t = modeDampingTable(lm);
+    const int used = lm.motorModel == MotorModel::FrozenFlux ? 0 : lm.motorModel == MotorModel::StaticSlope ? 1 : 2;
+    static const char* const kNames[] = {"frozen_flux", "static_slope", "dq_states"};
+    for (const auto& row : t.rows) {
+        std::string text = "mode " + formatted(row[0], 3) + ": damping ratio " + formatted(row[2 + 2 * used], 4) +
+                           " at " + formatted(row[1 + 2 * used], 5) + " Hz from motor_model " + kNames[used] +
+                           " (the one used here); the same mode";
+        bool first = true;
+        for (int k = 0; k < 3; ++k) {
+            if (k == used) continue;
+            text += std::string(first ? " " : ", ") + kNames[k] + " " + formatted(row[2 + 2 * k], 4) + " at " +
+                    formatted(row[1 + 2 * k], 5) + " Hz";
+            first = false;
+        }
+        notes.push_back(text + " (table mode_damping_by_motor_model; modes matched by nearest eigenvalue)");
+    }
+    return notes;
+}
+
+Eigen::VectorXcd harmonicResponse(const LinearModel& model, double P, const Eigen::VectorXcd& force,
+                                  Eigen::VectorXcd* states) {
     const std::complex<double> i(0, 1);
+    const int r = static_cast<int>(model.M.rows());
+    if (model.motorModel == MotorModel::DqStates && model.Afull.size()) {
+        // First order with the flux states: (iP·I − Afull)·x = b, b the
+        // forcing's accelerations M⁻¹·f in the u rows.
+        const int nx = static_cast<int>(model.Afull.rows());
+        Eigen::VectorXcd b = Eigen::VectorXcd::Zero(nx);
+        b.segment(r, r) = model.M.cast<std::complex<double>>().fullPivLu().solve(force);
+        const Eigen::MatrixXcd Z = (i * P) * Eigen::MatrixXcd::Identity(nx, nx) - model.Afull.cast<std::complex<double>>();
+        const Eigen::VectorXcd x = Z.fullPivLu().solve(b);
+        if (states) *states = x.tail(nx - 2 * r);
+        return x.head(r);
+    }
+    if (states) states->resize(0);
     const Eigen::MatrixXcd Z = model.K.cast<std::complex<double>>() -
                                (P * P) * model.M.cast<std::complex<double>>() +
                                (i * P) * model.C.cast<std::complex<double>>();
     return Z.fullPivLu().solve(force);
+}
+
+std::complex<double> harmonicProbeResponse(const LinearModel& model, double P, const Eigen::VectorXcd& force,
+                                           int probe) {
+    Eigen::VectorXcd z;
+    const Eigen::VectorXcd X = harmonicResponse(model, P, force, &z);
+    using C = std::complex<double>;
+    C y = (model.outputQ.row(probe).cast<C>() * X).value() +
+          C(0, P) * (model.outputU.row(probe).cast<C>() * X).value();
+    if (z.size()) y += (model.outputZ.row(probe).cast<C>() * z).value();
+    return y;
 }
 
 }  // namespace milldyn

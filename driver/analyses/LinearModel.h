@@ -29,10 +29,34 @@
 
 namespace milldyn {
 
+/// How a DqInductionMotor's fluxes enter a linear model (the static
+/// InductionMotor is its torque–speed slope in all three):
+///  - DqStates: the flux states are states of the linear model (Afull):
+///    the electrical damping and stiffness the machine puts on the train,
+///    and the machine's own electrical modes;
+///  - FrozenFlux: the fluxes held at their operating-point values in the
+///    stator frame (the mechanical rows only): no electrical damping;
+///  - StaticSlope: the fluxes at their steady state for every speed (the
+///    quasi-static reduction A_mm − A_mz·A_zz⁻¹·A_zm of Afull, the
+///    frequency → 0 limit of the machine): the steady torque–speed slope of
+///    the same machine, as a catalogue curve would give it.
+enum class MotorModel { DqStates, FrozenFlux, StaticSlope };
+/// "dq_states", "frozen_flux", "static_slope" (the scenario key's words).
+const char* motorModelName(MotorModel model);
+MotorModel motorModelFromName(const std::string& word);
+
 struct LinearModel {
-    Eigen::MatrixXd M, C, K;       ///< [kg*m^2], [N*m*s/rad], [N*m/rad]
-    Eigen::MatrixXd A;             ///< first-order state matrix [q; u]
-    Eigen::VectorXcd eigenvalues;  ///< of A, sorted by |imag| then real [1/s]
+    /// The motor model the second-order matrices, `eigenvalues` and the
+    /// harmonic response use (the same for all three without dq machines).
+    MotorModel motorModel = MotorModel::FrozenFlux;
+    /// [kg*m^2], [N*m*s/rad], [N*m/rad]: FrozenFlux and DqStates the
+    /// mechanical system with the fluxes frozen (DqStates adds the states'
+    /// coupling in Afull), StaticSlope with the quasi-static reduction.
+    Eigen::MatrixXd M, C, K;
+    Eigen::MatrixXd A;             ///< first-order state matrix [q; u] of M, C, K
+    /// The chosen model's eigenvalues, sorted by |imag| then real [1/s]:
+    /// of A, or of Afull with DqStates (and dq machines).
+    Eigen::VectorXcd eigenvalues;
     Eigen::VectorXd naturalFrequencies;  ///< undamped, from K v = ω² M v [rad/s]
     /// Columns, one per mode, rows every mobility (bodyNames; u = N·v when
     /// constrained), max |entry| = 1.
@@ -58,8 +82,14 @@ struct LinearModel {
     Eigen::MatrixXd Afull;
     Eigen::VectorXcd eigenvaluesFull;
     std::vector<std::string> stateNames;
-    /// Output rows: probe p's deviation ≈ outputQ.row(p)·q + outputU.row(p)·q̇.
-    Eigen::MatrixXd outputQ, outputU;
+    /// With such states, the first-order [q; u] matrices and eigenvalues of
+    /// the other two motor models, for comparison (empty without them).
+    Eigen::MatrixXd Afrozen, Astatic;
+    Eigen::VectorXcd eigenvaluesFrozen, eigenvaluesStatic;
+    /// Output rows: probe p's deviation ≈ outputQ.row(p)·q + outputU.row(p)·q̇
+    /// (+ outputZ.row(p)·z̃ with DqStates; StaticSlope has z̃ eliminated in
+    /// outputQ and outputU).
+    Eigen::MatrixXd outputQ, outputU, outputZ;
     std::vector<std::string> outputNames, outputUnits;
 };
 
@@ -69,8 +99,10 @@ struct LinearModel {
 /// (then M, C, K, A and the output rows are in the independent coordinates).
 /// With `withModes` false only M, C, K, A and the output rows are filled
 /// (no eigenproblems: what a static solve needs, at O(n²) instead of O(n³)).
+/// `motorModel` chooses how dq machines' fluxes enter M, C, K, A, the
+/// eigenvalues and the harmonic response (Afull is filled in every case).
 LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes = true,
-                           bool reduceConstraints = false);
+                           bool reduceConstraints = false, MotorModel motorModel = MotorModel::FrozenFlux);
 
 /// True when `lambda`, an eigenvalue of `model`, is a rigid-body mode's: zero
 /// up to round-off, |λ| <= max(1e-9·max|λ|, frequencyFloor). A free
@@ -91,13 +123,27 @@ void addLinearModelOutputs(const LinearModel& model, AnalysisResult& result);
 std::vector<std::string> dqMachineNames(const Scene& scene);
 
 /// Which motor model a linear analysis's damping comes from, for its notes:
-/// with dq machines, their fluxes frozen in `model.A` (and C), and the
-/// damping ratios of the oscillating modes with their flux states
-/// (Afull) side by side; InductionMotor elements as their static slope.
+/// one note naming the model used and every motor, and per oscillating
+/// mechanical mode its frequency and damping ratio under the three motor
+/// models (modes matched by nearest eigenvalue to the frozen-flux ones).
 /// Empty when the scene has no motor.
-std::string motorDampingNote(const Scene& scene, const LinearModel& model);
+std::vector<std::string> motorDampingNotes(const Scene& scene, const LinearModel& model);
 
-/// Complex amplitudes of q for the forcing f·e^{iPt}: (K − P²M + iP·C)·X = f.
-Eigen::VectorXcd harmonicResponse(const LinearModel& model, double P, const Eigen::VectorXcd& force);
+/// The table `mode_damping_by_motor_model`: per oscillating mode of the
+/// frozen-flux model, the matched eigenvalue's frequency [Hz] and damping
+/// ratio under each motor model. Empty name without dq machines.
+struct DataTable;
+DataTable modeDampingTable(const LinearModel& model);
+
+/// Complex amplitudes of q for the forcing f·e^{iPt} (f on the independent
+/// coordinates): (K − P²M + iP·C)·X = f, or with DqStates (and dq machines)
+/// (iP − Afull)·[X; iP·X; Z] = [0; M⁻¹f; 0], whose z̃ rows are returned
+/// after the r entries of X when `states` is given.
+Eigen::VectorXcd harmonicResponse(const LinearModel& model, double P, const Eigen::VectorXcd& force,
+                                  Eigen::VectorXcd* states = nullptr);
+/// Complex amplitude of probe `probe` under that forcing:
+/// outputQ·X + iP·outputU·X (+ outputZ·Z with DqStates).
+std::complex<double> harmonicProbeResponse(const LinearModel& model, double P, const Eigen::VectorXcd& force,
+                                           int probe);
 
 }  // namespace milldyn

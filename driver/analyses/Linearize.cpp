@@ -25,29 +25,29 @@ void addLinearModelOutputs(const LinearModel& lm, AnalysisResult& result) {
     result.matrices = {matrix("M", "kg*m^2", lm.M), matrix("C", "N*m*s/rad", lm.C), matrix("K", "N*m/rad", lm.K),
                        matrix("A", "1/s", lm.A)};
 
-    DataTable eig{"eigenvalues", {"index", "real", "imag", "frequency", "damping_ratio"},
-                  {"1", "1/s", "rad/s", "Hz", "1"}, {}};
-    for (Eigen::Index i = 0; i < lm.eigenvalues.size(); ++i) {
-        const auto l = lm.eigenvalues[i];
-        const double mag = std::abs(l);
-        // The rigid rotation's eigenvalue is 0 up to differencing noise: no damping ratio.
-        const bool rigid = isRigidEigenvalue(lm, l);
-        eig.rows.push_back({double(i + 1), l.real(), l.imag(), std::abs(l.imag()) / (2 * M_PI),
-                            rigid ? 0.0 : -l.real() / mag});
-    }
-    result.extraTables.push_back(eig);
+    auto eigenTable = [&](const std::string& name, const Eigen::VectorXcd& ev) {
+        DataTable eig{name, {"index", "real", "imag", "frequency", "damping_ratio"}, {"1", "1/s", "rad/s", "Hz", "1"}, {}};
+        for (Eigen::Index i = 0; i < ev.size(); ++i) {
+            const auto l = ev[i];
+            // The rigid rotation's eigenvalue is 0 up to differencing noise: no damping ratio.
+            const bool rigid = isRigidEigenvalue(lm, l);
+            eig.rows.push_back({double(i + 1), l.real(), l.imag(), std::abs(l.imag()) / (2 * M_PI),
+                                rigid ? 0.0 : -l.real() / std::abs(l)});
+        }
+        return eig;
+    };
+    // The chosen motor model's (scenario.motor_model), then, with dq
+    // machines, each model's for comparison.
+    result.extraTables.push_back(eigenTable("eigenvalues", lm.eigenvalues));
     if (lm.Afull.size()) {
         // With the motors' electrical states (dq machines' fluxes).
         result.matrices.push_back(matrix("A_with_motor_states", "1/s", lm.Afull));
-        DataTable full{"eigenvalues_with_motor_states", {"index", "real", "imag", "frequency", "damping_ratio"},
-                       {"1", "1/s", "rad/s", "Hz", "1"}, {}};
-        for (Eigen::Index i = 0; i < lm.eigenvaluesFull.size(); ++i) {
-            const auto l = lm.eigenvaluesFull[i];
-            const bool rigid = isRigidEigenvalue(lm, l);
-            full.rows.push_back({double(i + 1), l.real(), l.imag(), std::abs(l.imag()) / (2 * M_PI),
-                                 rigid ? 0.0 : -l.real() / std::abs(l)});
-        }
-        result.extraTables.push_back(full);
+        result.matrices.push_back(matrix("A_frozen_flux", "1/s", lm.Afrozen));
+        result.matrices.push_back(matrix("A_static_slope", "1/s", lm.Astatic));
+        result.extraTables.push_back(eigenTable("eigenvalues_with_motor_states", lm.eigenvaluesFull));
+        result.extraTables.push_back(eigenTable("eigenvalues_frozen_flux", lm.eigenvaluesFrozen));
+        result.extraTables.push_back(eigenTable("eigenvalues_static_slope", lm.eigenvaluesStatic));
+        result.extraTables.push_back(modeDampingTable(lm));
     }
 
     DataTable modes{"modes", {"mode", "natural_frequency", "natural_frequency_hz"}, {"1", "rad/s", "Hz"}, {}};
@@ -94,7 +94,7 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
     auto scene = buildScene(spec);
     SimTK::State state = initialState(*scene, spec);
     if (spec.scenario.text("operating_point") == "steady") state = solveSteadyState(*scene, state);
-    LinearModel lm = linearizeScene(*scene, state, true, true);
+    LinearModel lm = linearizeScene(*scene, state, true, true, motorModelFromName(spec.scenario.text("motor_model")));
 
     AnalysisResult result;
     result.derived = derivedResults(*scene);
@@ -165,32 +165,19 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
         const auto l = lm.eigenvalues[i];
         if (l.imag() < 0) continue;  // one of each conjugate pair
         const std::string tag = "eigenvalue_" + std::to_string(i + 1);
-        result.results.push_back({tag + "_real", l.real(), "1/s", "damped eigenvalue, real part"});
-        if (l.imag() > 0) result.results.push_back({tag + "_imag", l.imag(), "rad/s", "damped eigenvalue, imaginary part"});
+        result.results.push_back({tag + "_real", l.real(), "1/s", std::string("damped eigenvalue (motor_model ") + motorModelName(lm.motorModel) + "), real part"});
+        if (l.imag() > 0) result.results.push_back({tag + "_imag", l.imag(), "rad/s", std::string("damped eigenvalue (motor_model ") + motorModelName(lm.motorModel) + "), imaginary part"});
     }
-    if (lm.Afull.size()) {
-        std::string states;
-        for (const auto& name : dqMachineNames(*scene)) states += (states.empty() ? "" : ", ") + name;
-        result.notes.push_back("motor models: the table eigenvalues (and C) has " + states +
-                               " with their flux states frozen (no electrical damping), InductionMotor elements as "
-                               "their static torque-speed slope; eigenvalues_with_motor_states includes the fluxes of " +
-                               states + " (in the frame turning with the supply): its damping ratios are the ones "
-                               "with the machines' electrical dynamics");
-        for (Eigen::Index i = 0; i < lm.eigenvaluesFull.size(); ++i) {
-            const auto l = lm.eigenvaluesFull[i];
-            if (l.imag() <= 0) continue;  // the oscillating ones, one of each pair
-            const std::string tag = "eigenvalue_with_motor_states_" + std::to_string(i + 1);
-            result.results.push_back({tag + "_real", l.real(), "1/s", "eigenvalue with the motors' flux states, real part"});
-            result.results.push_back({tag + "_imag", l.imag(), "rad/s", "eigenvalue with the motors' flux states, imaginary part"});
-            result.results.push_back({tag + "_damping_ratio", -l.real() / std::abs(l), "1",
-                                      "damping ratio with the motors' flux states"});
-        }
-    } else {
-        bool staticMotor = false;
-        for (const auto& e : spec.elements) staticMotor = staticMotor || e.type == "InductionMotor";
-        if (staticMotor)
-            result.notes.push_back("motor models: InductionMotor elements enter as their static torque-speed slope at "
-                                   "the operating point (their damping); a DqInductionMotor would add its flux states");
+    // Which motor model each mode's damping comes from (per mode, all three side by side).
+    for (const std::string& note : motorDampingNotes(*scene, lm)) result.notes.push_back(note);
+    for (Eigen::Index i = 0; i < lm.eigenvaluesFull.size(); ++i) {
+        const auto l = lm.eigenvaluesFull[i];
+        if (l.imag() <= 0) continue;  // the oscillating ones, one of each pair
+        const std::string tag = "eigenvalue_with_motor_states_" + std::to_string(i + 1);
+        result.results.push_back({tag + "_real", l.real(), "1/s", "eigenvalue with the motors' flux states, real part"});
+        result.results.push_back({tag + "_imag", l.imag(), "rad/s", "eigenvalue with the motors' flux states, imaginary part"});
+        result.results.push_back({tag + "_damping_ratio", -l.real() / std::abs(l), "1",
+                                  "damping ratio with the motors' flux states"});
     }
     if (elastic == 0)
         result.notes.push_back("no elastic mode: every natural frequency is at most " +

@@ -47,10 +47,8 @@ Eigen::VectorXcd LoadResponse::forcing(int k, bool inPhase) const {
 }
 
 std::complex<double> LoadResponse::respond(double P, const Eigen::VectorXcd& f, int probe) const {
-    const Eigen::VectorXcd X = harmonicResponse(m_model, P, f);
-    const std::complex<double> q = m_model.outputQ.row(probe).cast<std::complex<double>>() * X;
-    const std::complex<double> u = m_model.outputU.row(probe).cast<std::complex<double>>() * X;
-    return q + std::complex<double>(0, P) * u;
+    // The linear model's chosen motor model (with dq machines' flux states, their outputs too).
+    return harmonicProbeResponse(m_model, P, f, probe);
 }
 
 std::complex<double> LoadResponse::output(double P, int k, int probe) const {

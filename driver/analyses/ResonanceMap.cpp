@@ -110,11 +110,13 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     const SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
     // Rigid meshes (GearPair, GearMesh, PlanetaryGearSet, BeltDrive) are
     // reduced to independent coordinates, as linearize does.
-    const LinearModel lm = linearizeScene(*scene, steady, true, true);
-    const std::string motorNote = motorDampingNote(*scene, lm);
+    // The dq machines' fluxes as scenario.motor_model says (default their states).
+    const LinearModel lm =
+        linearizeScene(*scene, steady, true, true, motorModelFromName(sc.text("motor_model")));
+    const std::vector<std::string> motorNotes = motorDampingNotes(*scene, lm);
     if (sc.text("load").empty()) {
         AnalysisResult orders = runOrderMap(spec, *scene, steady, lm, progress);
-        if (!motorNote.empty()) orders.notes.push_back(motorNote);
+        orders.notes.insert(orders.notes.end(), motorNotes.begin(), motorNotes.end());
         return orders;
     }
     const PeriodicLoad* load = scene->findElement<PeriodicLoad>(sc.text("load"));
@@ -133,7 +135,7 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     const double threshold = sc.number("threshold");
 
     AnalysisResult result;
-    if (!motorNote.empty()) result.notes.push_back(motorNote);
+    result.notes = motorNotes;
     result.derived = derivedResults(*scene);
     result.analysis = "resonance_map";
     result.tableName = "resonance_map";

@@ -5,6 +5,10 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <atomic>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -146,10 +150,46 @@ DatasheetProblem checkDatasheet(const MotorDatasheet& d) {
     return {};
 }
 
+namespace {
+std::atomic<long> g_fits{0};
+}  // namespace
+
+long cageFitCount() { return g_fits.load(); }
+
+CageFitResult fitCageCircuitCached(const MotorDatasheet& d, int cages) {
+    struct Entry {
+        std::once_flag once;
+        CageFitResult result;
+    };
+    // A refused datasheet throws here, outside call_once (a throwing
+    // callable there has deadlocked some standard libraries).
+    if ((cages != 1 && cages != 2) || !checkDatasheet(d).key.empty()) return fitCageCircuit(d, cages);
+    static std::mutex mutex;
+    static std::map<std::vector<double>, std::shared_ptr<Entry>> cache;
+    std::vector<double> key = {double(cages),       d.ratedPower,  d.ratedSpeed,
+                               d.lineVoltage,       d.ratedCurrent, d.powerFactor,
+                               d.efficiency,        d.lockedRotorTorqueRatio, d.breakdownTorqueRatio,
+                               d.lockedRotorCurrentRatio, d.frequency, double(d.polePairs),
+                               double(d.curveSpeeds.size())};
+    key.insert(key.end(), d.curveSpeeds.begin(), d.curveSpeeds.end());
+    key.insert(key.end(), d.curveTorques.begin(), d.curveTorques.end());
+    std::shared_ptr<Entry> entry;
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        std::shared_ptr<Entry>& slot = cache[key];
+        if (!slot) slot = std::make_shared<Entry>();
+        entry = slot;
+    }
+    // Outside the map's lock: other keys fit meanwhile.
+    std::call_once(entry->once, [&] { entry->result = fitCageCircuit(d, cages); });
+    return entry->result;
+}
+
 CageFitResult fitCageCircuit(const MotorDatasheet& d, int cages) {
     if (cages != 1 && cages != 2) throw std::invalid_argument("fitCageCircuit: 1 or 2 cages");
     const DatasheetProblem problem = checkDatasheet(d);
     if (!problem.key.empty()) throw std::invalid_argument(problem.key + ": " + problem.reason);
+    ++g_fits;
     CageFitResult out;
     out.polePairs = polePairsOf(d);
     out.phaseVoltage = d.lineVoltage / std::sqrt(3.0);

@@ -111,4 +111,16 @@ DatasheetProblem checkDatasheet(const MotorDatasheet& data);
  */
 CageFitResult fitCageCircuit(const MotorDatasheet& data, int cages);
 
+/// fitCageCircuit, computed once per (datasheet, cages) in the process: a
+/// scene build fits each DOL InductionMotor with full data and each
+/// datasheet DqInductionMotor (a few seconds each), so a sweep would refit
+/// at every point. Keyed by every field of the datasheet, bit for bit;
+/// thread-safe (sweeps build scenes on several threads): the first caller
+/// of a key fits, concurrent callers of the same key wait for its result,
+/// other keys fit in parallel. A datasheet the fit refuses throws each
+/// time (not cached).
+CageFitResult fitCageCircuitCached(const MotorDatasheet& data, int cages);
+/// How many fits fitCageCircuit has run in this process (for tests of the cache).
+long cageFitCount();
+
 }  // namespace milldyn

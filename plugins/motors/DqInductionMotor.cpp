@@ -74,8 +74,8 @@ DqInductionMotor::DqInductionMotor(const SimTK::GeneralForceSubsystem& forces, c
         m_nr = 2;
     }
     using K = StarterParams::Kind;
-    if (!p.starter.switchSpeeds.empty())
-        throw std::invalid_argument("DqInductionMotor: the starter switches by time only (switch_times)");
+    if (!p.starter.switchSpeeds.empty() && p.openTransitionTime > 0)
+        throw std::invalid_argument("DqInductionMotor: an open star-delta transition switches by time only");
     if (m_nr == 2 && (p.starter.kind == K::RotorResistance || p.starter.kind == K::LiquidResistance))
         throw std::invalid_argument("DqInductionMotor: a " + Starter::kindName(p.starter.kind) +
                                     " starter needs a slip-ring rotor (one rotor circuit), not a double cage");
@@ -465,7 +465,7 @@ CageFitResult fitOf(const ElementSpec& e) {
     const DatasheetProblem problem = checkDatasheet(d);
     if (!problem.key.empty()) throw e.error(problem.key, problem.reason);
     const int cages = cagesOf(e);
-    const CageFitResult fit = fitCageCircuit(d, cages);
+    const CageFitResult fit = fitCageCircuitCached(d, cages);  // once per datasheet in the process
     const double tolerance = e.number("fit_tolerance");
     if (fit.worstResidual > tolerance) {
         const FitPoint& w = fit.points[fit.worstPoint];
@@ -493,17 +493,32 @@ void crossCheckDqInductionMotor(const ElementSpec& e) {
             if (owner != starter && e.has(k))
                 throw e.error(k, "not used with starter " + starter + " (only with starter " + owner + ")");
     const bool stepped = starter == "star_delta" || starter == "rotor_resistance";
-    if (!stepped && e.has("switch_times"))
-        throw e.error("switch_times", "not used with starter " + starter + " (only with star_delta and rotor_resistance)");
+    for (const char* k : {"switch_times", "switch_speeds"})
+        if (!stepped && e.has(k))
+            throw e.error(k, "not used with starter " + starter + " (only with star_delta and rotor_resistance)");
+    if (e.has("switch_times") && e.has("switch_speeds"))
+        throw e.error("switch_speeds", "give switch_times or switch_speeds, not both");
+    // The switches by time (switch_times) or by shaft speed (switch_speeds).
+    const std::size_t switches = e.numbers("switch_times").size() + e.numbers("switch_speeds").size();
+    const char* switchKey = e.has("switch_speeds") ? "switch_speeds" : "switch_times";
+    if (e.has("switch_speeds") && e.number("open_transition_time") > 0)
+        throw e.error("switch_speeds", "an open transition (open_transition_time > 0) switches by time only: give "
+                                       "switch_times, or a closed transition");
     const bool ramped = starter == "soft_start" || starter == "frequency_converter" || starter == "liquid_resistance";
     if (!ramped && e.has("ramp_time"))
         throw e.error("ramp_time", "not used with starter " + starter +
                                        " (only with soft_start, frequency_converter and liquid_resistance)");
-    if (starter == "star_delta" && e.numbers("switch_times").size() != 1)
-        throw e.error(e.has("switch_times") ? "switch_times" : "starter", "star_delta switches once: give one switch_times item");
-    if (starter == "rotor_resistance" && e.numbers("switch_times").size() != e.numbers("resistance_ratios").size())
+    if (starter == "star_delta" && switches != 1)
+        throw e.error(e.has(switchKey) ? switchKey : "starter",
+                      "star_delta switches once: give one switch_times or one switch_speeds item");
+    if (starter == "rotor_resistance" && switches != e.numbers("resistance_ratios").size())
         throw e.error(e.has("resistance_ratios") ? "resistance_ratios" : "starter",
-                      "rotor_resistance needs one resistance_ratios item per switch_times item");
+                      std::string("rotor_resistance needs one resistance_ratios item per ") + switchKey + " item");
+    if (e.has("switch_speeds")) {
+        const auto& v = e.numbers("switch_speeds");
+        for (std::size_t i = 1; i < v.size(); ++i)
+            if (!(v[i] > v[i - 1])) throw e.error("switch_speeds", "must increase from one switching to the next");
+    }
     if (ramped && !(e.number("ramp_time") > 0))
         throw e.error(e.has("ramp_time") ? "ramp_time" : "starter",
                       "a ramp of zero length: " + starter + " needs ramp_time > 0");
@@ -607,6 +622,7 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     for (auto k : kDqStarters)
         if (Starter::kindName(k) == starterName) st.kind = k;
     st.switchTimes = spec.numbers("switch_times");
+    st.switchSpeeds = spec.numbers("switch_speeds");
     st.resistanceRatios = spec.numbers("resistance_ratios");
     st.initialVoltage = spec.number("initial_voltage");
     st.initialFrequency = spec.number("initial_frequency");
@@ -634,6 +650,25 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     const SimTK::MobilizedBody mobod = shaft->mobod;
     addStarterEvents(scene, spec.name, closing, impl);
+    if (!st.switchSpeeds.empty()) {
+        // A switch at a speed (as InductionMotor's): the step is a value
+        // kept between steps, advanced at the first accepted step end at or
+        // past the speed (closed transitions only: an open one is timed).
+        const std::vector<double> speeds = st.switchSpeeds;
+        scene.addLaggedValue({spec.name + ".starter_step", true,
+                              [impl, mobod, speeds](const SimTK::State& s) {
+                                  int step = impl->getStarterStep(s);
+                                  while (step < static_cast<int>(speeds.size()) &&
+                                         pinSpeed(s, mobod) >= speeds[static_cast<std::size_t>(step)])
+                                      ++step;
+                                  return static_cast<double>(step);
+                              },
+                              [impl](SimTK::State& s, double v) {
+                                  const int old = impl->getStarterStep(s);
+                                  impl->setStarterStep(s, static_cast<int>(v));
+                                  return std::abs(v - old);
+                              }});
+    }
     // Stator open intervals: an open star–delta transition, a supply interruption.
     auto openInterval = [&](double from, double length, const std::string& what) {
         scene.addSwitchEvent({Scene::SwitchEvent::Kind::StarterStep, from, spec.name + " " + what + " opens",
@@ -744,6 +779,10 @@ void registerDqInductionMotor(ElementRegistry& registry) {
         P::quantity("fit_tolerance", "1", "datasheet: largest relative residual of the fit accepted").optional(0.05).above(0),
         P::choice("starter", starters, "how the motor is started").optional("direct_on_line"),
         P::quantityList("switch_times", "s", 1, 20, "star_delta (one), rotor_resistance: switching times")
+            .optional(0.0)
+            .above(0),
+        P::quantityList("switch_speeds", "rad/s", 1, 20,
+                        "star_delta (one), rotor_resistance: switching shaft speeds (instead of switch_times)")
             .optional(0.0)
             .above(0),
         P::quantity("open_transition_time", "s", "star_delta: dead time with the stator open (0: closed transition)")

@@ -29,7 +29,8 @@ struct DqInductionMotorParams {
     double phaseVoltage = 0;       ///< V [V] rms phase voltage, > 0
     double frequency = 0;          ///< f [Hz] supply frequency, > 0
     /// Every starter of InductionMotor (Starter.h): star_delta and
-    /// rotor_resistance switch by time only.
+    /// rotor_resistance switch by time or by shaft speed (an open
+    /// star–delta transition by time only).
     StarterParams starter;
     /// star_delta: the open-transition dead time [s] (>= 0; 0: closed
     /// transition) and the phase of the delta's winding voltage against the

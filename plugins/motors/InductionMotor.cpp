@@ -550,7 +550,7 @@ void addSwitchOnPeakEstimate(const ElementSpec& spec, Scene& scene, const Induct
     d.polePairs = std::max(1, static_cast<int>(std::lround(2 * M_PI * 50 / wc)));
     d.frequency = d.polePairs * wc / (2 * M_PI);
     if (!checkDatasheet(d).key.empty()) return;
-    const CageFitResult fit = fitCageCircuit(d, 2);
+    const CageFitResult fit = fitCageCircuitCached(d, 2);  // once per datasheet in the process
     if (fit.worstResidual > 0.05) {
         scene.note("force " + spec.name + " switch-on peak",
                    "not estimated: no double-cage circuit fits its data within 5 %");

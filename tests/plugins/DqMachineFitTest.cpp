@@ -8,8 +8,10 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <thread>
 
 #include "driver/ModelFile.h"
+#include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
 #include "plugins/motors/CageCircuitFit.h"
 #include "plugins/motors/DqInductionMotor.h"
@@ -188,6 +190,75 @@ TEST(DqInductionMotorDatasheet, OneElementFromADatasheetOrALocatedRefusal) {
     const std::string part = errorOf(missing);
     EXPECT_NE(part.find("error: motor.rated_power: a datasheet needs breakdown_ratio"), std::string::npos) << part;
     for (const std::string& e : {single, fast, both, part}) EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 0) << e;
+}
+
+
+// The fit runs once per datasheet in the process (fitCageCircuitCached):
+// two scene builds of the same parameters fit once and give the same
+// circuit; a build on another thread at the same time waits for that fit.
+// The efficiencies here are used by no other test, so no earlier fit of
+// this process is in the cache.
+ModelSpec fitModel(const std::string& element) {
+    const std::string text =
+        "format_version: 1\nname: t\nbodies:\n  - name: shaft\n    inertia: 1 kg*m^2\n"
+        "    joint: {type: pin, parent: ground}\nelements:\n" +
+        element + "scenario:\n  analysis: transient\n  end_time: 1 s\n";
+    return readModelText(text, "m.yaml", defaultModelReader());
+}
+
+TEST(CageCircuitFitCache, TwoBuildsOfTheSameDatasheetFitOnce) {
+    std::string sheet = kDatasheet;
+    sheet.replace(sheet.find("0.894"), 5, "0.8937");
+    // Reading checks the fit (a datasheet no circuit fits is an input
+    // error): the read and both builds fit once.
+    const long before = cageFitCount();
+    const ModelSpec spec = fitModel("  - type: DqInductionMotor\n    name: motor\n    body: shaft\n" + sheet);
+    const auto a = buildScene(spec);
+    const auto b = buildScene(spec);
+    EXPECT_EQ(cageFitCount() - before, 1);
+    const DqInductionMotorParams& pa = a->findElement<DqInductionMotor>("motor")->params();
+    const DqInductionMotorParams& pb = b->findElement<DqInductionMotor>("motor")->params();
+    EXPECT_GT(pa.statorResistance, 0);
+    EXPECT_EQ(pa.statorResistance, pb.statorResistance);
+    EXPECT_EQ(pa.rotorResistance, pb.rotorResistance);
+    EXPECT_EQ(pa.rotorResistance2, pb.rotorResistance2);
+    EXPECT_EQ(pa.statorLeakage, pb.statorLeakage);
+    EXPECT_EQ(pa.rotorLeakage, pb.rotorLeakage);
+    EXPECT_EQ(pa.rotorLeakage2, pb.rotorLeakage2);
+    EXPECT_EQ(pa.mainInductance, pb.mainInductance);
+    // Other data: a fit of its own.
+    sheet.replace(sheet.find("0.8937"), 6, "0.8941");
+    const long between = cageFitCount();
+    buildScene(fitModel("  - type: DqInductionMotor\n    name: motor\n    body: shaft\n" + sheet));
+    EXPECT_EQ(cageFitCount() - between, 1);
+}
+
+TEST(CageCircuitFitCache, StaticMotorsPeakEstimateFitsOnceAcrossThreads) {
+    // A DOL InductionMotor with full data estimates the dq switch-on peak
+    // from a double-cage fit of its data at every build.
+    const ModelSpec spec = fitModel(
+        "  - type: InductionMotor\n    name: motor\n    body: shaft\n    law: kloss\n    rated_torque: 97.4 N*m\n"
+        "    rated_speed: 1470 rpm\n    synchronous_speed: 1500 rpm\n    breakdown_ratio: 2.5\n"
+        "    rated_current: 28.5 A\n    rated_power_factor: 0.85\n    locked_rotor_current_ratio: 7.0\n"
+        "    rated_efficiency: 0.9137\n    no_load_loss: 300 W\n");
+    const long before = cageFitCount();
+    std::unique_ptr<Scene> a, b;
+    std::thread t1([&] { a = buildScene(spec); });
+    std::thread t2([&] { b = buildScene(spec); });
+    t1.join();
+    t2.join();
+    EXPECT_EQ(cageFitCount() - before, 1);
+    // Both builds report the same (the estimate, or the note that no
+    // double cage fits these data within 5 %).
+    const auto outcome = [](const Scene& s) {
+        std::string out;
+        for (const auto& d : s.derivedValues())
+            if (d.name.rfind("motor.", 0) == 0) out += d.name + "=" + std::to_string(d.value) + ";";
+        for (const auto& n : s.notes()) out += n.what + ": " + n.why + ";";
+        return out;
+    };
+    EXPECT_FALSE(outcome(*a).empty());
+    EXPECT_EQ(outcome(*a), outcome(*b));
 }
 
 }  // namespace

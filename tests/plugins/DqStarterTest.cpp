@@ -210,3 +210,84 @@ TEST(DqStarter, SteadyRunningStartsWithTheFieldBuiltUp) {
 
 }  // namespace
 }  // namespace milldyn
+
+namespace milldyn {
+namespace {
+
+// models/start_bench_dq_star_delta.yaml with its switch by time replaced by
+// `switch` (and extra scenario/integrator lines).
+std::string dqStarDeltaBench(const std::string& name, const std::string& switching, const std::string& extra = "") {
+    std::ifstream in(std::string(MILLDYN_SOURCE_DIR) + "/models/start_bench_dq_star_delta.yaml");
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string model = text.str();
+    const std::string timed = "    switch_times: [2 s]\n";
+    model.replace(model.find(timed), timed.size(), switching);
+    model += extra;
+    const std::string path = ::testing::TempDir() + "/dq_star_delta_" + name + ".yaml";
+    std::ofstream(path) << model;
+    return path;
+}
+
+// Star–delta switched at a shaft speed: the unloaded bench runs up in star
+// to near synchronous speed (157.08 rad/s), and switches where it passes
+// 153 rad/s — above 95 % of its steady speed, so the 95 % crossing
+// (start_time) comes first and the sequence ends later (sequence_end), with
+// the summary's note. The switch is taken at the first accepted step end at
+// or past the speed (as InductionMotor's): with max_step 0.1 ms the speed
+// there exceeds 153 rad/s by at most the step's speed gain.
+TEST(DqStarter, StarDeltaSwitchedAtASpeed) {
+    const double v = 153, h = 1e-4;
+    const AnalysisResult r = runModelFile(
+        dqStarDeltaBench("speed", "    switch_speeds: [153 rad/s]\n"),
+        {{"integrator.max_step", "0.1 ms"}, {"scenario.end_time", "8 s"}, {"outputs.plots", "false"}});
+    EXPECT_EQ(r.verdict, "completed") << r.verdictText;
+    const ResultScalar* end = r.find("sequence_end.motor");
+    const ResultScalar* t95 = r.find("start_time");
+    ASSERT_NE(end, nullptr);
+    ASSERT_NE(t95, nullptr);
+    EXPECT_LT(t95->value, end->value);
+    bool noted = false;
+    for (const auto& n : r.notes) noted = noted || n.find("starting sequence ended later") != std::string::npos;
+    EXPECT_TRUE(noted);
+    // The switch in the samples: the last sample in star (u = 1/√3) and the
+    // first in delta (u = 1) bracket sequence_end and the speed v.
+    std::size_t i = 0;
+    while (i < r.rows.size() && r.value(i, "motor.voltage") < 0.99) ++i;
+    ASSERT_GT(i, 0u);
+    ASSERT_LT(i, r.rows.size());
+    EXPECT_NEAR(r.value(i - 1, "motor.voltage"), 1 / std::sqrt(3.0), 1e-12);
+    EXPECT_LE(r.value(i - 1, "time"), end->value);
+    EXPECT_GE(r.value(i, "time"), end->value);
+    EXPECT_GE(r.value(i, "shaft.speed"), v);
+    // Before the step that switched, the speed was below v; the step gains
+    // at most max_step × the largest acceleration of the run.
+    double maxAccel = 0;
+    for (std::size_t k = 1; k < r.rows.size(); ++k)
+        maxAccel = std::max(maxAccel, std::abs(r.value(k, "shaft.speed") - r.value(k - 1, "shaft.speed")) /
+                                          (r.value(k, "time") - r.value(k - 1, "time")));
+    EXPECT_LT(r.value(i - 1, "shaft.speed"), v + maxAccel * h);
+    // Sampled 20 times coarser, the switch is at the same instant: it is
+    // taken on the integration steps, not on the samples.
+    const AnalysisResult again = runModelFile(
+        dqStarDeltaBench("speed_coarse", "    switch_speeds: [153 rad/s]\n"),
+        {{"integrator.max_step", "0.1 ms"}, {"scenario.end_time", "8 s"}, {"outputs.sample_interval", "2 ms"},
+         {"outputs.plots", "false"}});
+    ASSERT_NE(again.find("sequence_end.motor"), nullptr);
+    // (A switch found on the samples would move by up to their 2 ms.)
+    EXPECT_NEAR(again.find("sequence_end.motor")->value, end->value, h);
+}
+
+TEST(DqStarter, SwitchSpeedsInputErrors) {
+    const std::string both = errorOf("    starter: star_delta\n    switch_times: [1 s]\n    switch_speeds: [100 rad/s]\n");
+    EXPECT_NE(both.find("error: motor.switch_speeds: give switch_times or switch_speeds, not both"), std::string::npos) << both;
+    const std::string open =
+        errorOf("    starter: star_delta\n    switch_speeds: [100 rad/s]\n    open_transition_time: 0.05 s\n");
+    EXPECT_NE(open.find("error: motor.switch_speeds: an open transition"), std::string::npos) << open;
+    const std::string soft = errorOf("    starter: soft_start\n    ramp_time: 1 s\n    switch_speeds: [100 rad/s]\n");
+    EXPECT_NE(soft.find("error: motor.switch_speeds: not used with starter soft_start"), std::string::npos) << soft;
+    EXPECT_EQ(errorOf("    starter: star_delta\n    switch_speeds: [100 rad/s]\n"), "");
+}
+
+}  // namespace
+}  // namespace milldyn

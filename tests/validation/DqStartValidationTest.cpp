@@ -17,12 +17,13 @@ namespace {
 
 TEST(DqStartValidation, EveryCasePasses) {
     const auto rows = dqStartCases("");
-    // 3 benches × (4 as shipped + 4 at 1e-9) + 2 balances + 4 star–delta + 2 soft start + 1 MSL.
-    EXPECT_EQ(rows.size(), 81u);
+    // 3 benches × (4 as shipped + 4 at 1e-9) + 2 balances + 4 star–delta + 2 soft start + 1 MSL, ...;
+    // linearize_dq_belt_mode 4 (flux states 2, static slope 2).
+    EXPECT_EQ(rows.size(), 83u);
     for (const auto& r : rows)
         EXPECT_EQ(r.status, "pass") << r.caseName << ": " << r.quantity << " " << r.multibody.value_or(NAN) << " vs "
                                     << r.oracle << " rel " << r.relError << " tol " << r.tolerance;
-    test::expectSectionCounts(rows, "The dq machine against an independent transient oracle (issue 15)", {81, 0, 0, 0});
+    test::expectSectionCounts(rows, "The dq machine against an independent transient oracle (issue 15)", {83, 0, 0, 0});
 }
 
 

@@ -52,9 +52,9 @@ std::string seconds(double t) { return formatNumber(std::round(t * 1e4) / 1e4) +
 
 std::string model(const std::string& name) { return modelsDirectory() + "/start_bench_" + name + ".yaml"; }
 
-/// The bench's machine restated for the oracle.
-oc::DqMachine machineOf(const ModelSpec& spec) {
-    const ElementSpec& m = *spec.findElement("motor");
+/// A model's machine (the DqInductionMotor `element`) restated for the oracle.
+oc::DqMachine machineOf(const ModelSpec& spec, const std::string& element = "motor") {
+    const ElementSpec& m = *spec.findElement(element);
     oc::DqMachine d;
     d.rs = m.number("stator_resistance");
     d.rr = m.number("rotor_resistance");
@@ -573,19 +573,7 @@ void beltModeCase(std::vector<ValidationRow>& rows) {
     ModelSpec spec;
     const AnalysisResult r = runModelFile(modelsDirectory() + "/dq_belt_crusher.yaml", {}, &spec);
     oc::DqBeltChain c;
-    c.machine = [&] {
-        const ElementSpec& m = *spec.findElement("drive");
-        oc::DqMachine d;
-        d.rs = m.number("stator_resistance");
-        d.rr = m.number("rotor_resistance");
-        d.lls = m.number("stator_leakage_inductance");
-        d.llr = m.number("rotor_leakage_inductance");
-        d.lm = m.number("main_inductance");
-        d.polePairs = static_cast<int>(m.number("pole_pairs"));
-        d.phaseVoltage = m.number("phase_voltage");
-        d.frequency = m.number("frequency");
-        return d;
-    }();
+    c.machine = machineOf(spec, "drive");
     c.motorInertia = spec.findBody("motor")->inertia;
     c.flywheelInertia = spec.findBody("flywheel")->inertia;
     const ElementSpec& belt = *spec.findElement("belt");
@@ -618,6 +606,22 @@ void beltModeCase(std::vector<ValidationRow>& rows) {
                               model.imag(), oracle.imag(), 1e-5, note));
     rows.push_back(compareRow("linearize_dq_belt_mode", "belt mode, damping ratio (with the flux states)", "1",
                               -model.real() / std::abs(model), -oracle.real() / std::abs(oracle), 1e-4, note));
+    // motor_model static_slope: the same machine as its steady curve's
+    // slope, the quasi-static elimination of the fluxes (eigenvalues table).
+    const AnalysisResult st =
+        runModelFile(modelsDirectory() + "/dq_belt_crusher.yaml", {{"scenario.motor_model", "static_slope"}});
+    std::vector<std::complex<double>> slope;
+    for (const auto& t : st.extraTables)
+        if (t.name == "eigenvalues")
+            for (const auto& row : t.rows) slope.push_back({row[1], row[2]});
+    const std::complex<double> staticModel = nearest(slope);
+    const std::string staticNote = "motor_model static_slope (fluxes eliminated at their steady state) vs the oracle's "
+                                   "chain with the T circuit's dT/dω at the operating slip (staticBeltChainEigenvalues)";
+    rows.push_back(compareRow("linearize_dq_belt_mode", "belt mode, damping ratio (static slope)", "1",
+                              -staticModel.real() / std::abs(staticModel), -staticSlope.real() / std::abs(staticSlope),
+                              1e-4, staticNote));
+    rows.push_back(compareRow("linearize_dq_belt_mode", "belt mode, imaginary part (static slope)", "rad/s",
+                              staticModel.imag(), staticSlope.imag(), 1e-5, staticNote));
 }
 
 }  // namespace

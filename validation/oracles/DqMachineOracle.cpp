@@ -410,7 +410,7 @@ std::vector<std::complex<double>> sortedEigenvalues(const Eigen::MatrixXd& A) {
 
 }  // namespace
 
-std::vector<std::complex<double>> dqBeltChainEigenvalues(const DqBeltChain& c) {
+static Eigen::MatrixXd dqBeltChainJacobian(const DqBeltChain& c) {
     const DqMachine& m = c.machine;
     const double we = 2 * M_PI * m.frequency, ls = m.lls + m.lm, lr = m.llr + m.lm, det = ls * lr - m.lm * m.lm;
     const double Te0 = c.loadTorque / c.ratio, s0 = slipForTorque(m, Te0);
@@ -450,10 +450,10 @@ std::vector<std::complex<double>> dqBeltChainEigenvalues(const DqBeltChain& c) {
         const auto fp = rates(xp), fm = rates(xm);
         for (int i = 0; i < 7; ++i) A(i, j) = (fp[i] - fm[i]) / (2 * h);
     }
-    return sortedEigenvalues(A);
+    return A;
 }
 
-std::vector<std::complex<double>> staticBeltChainEigenvalues(const DqBeltChain& c) {
+static Eigen::MatrixXd staticBeltChainMatrix(const DqBeltChain& c) {
     const DqMachine& m = c.machine;
     const double we = 2 * M_PI * m.frequency, ws = we / m.polePairs;
     const double s0 = slipForTorque(m, c.loadTorque / c.ratio), ds = 1e-6;
@@ -466,7 +466,29 @@ std::vector<std::complex<double>> staticBeltChainEigenvalues(const DqBeltChain& 
         1, 0, -c.ratio,
         c.ratio * c.damping / c.flywheelInertia, c.ratio * c.stiffness / c.flywheelInertia,
         -c.ratio * c.ratio * c.damping / c.flywheelInertia;
-    return sortedEigenvalues(A);
+    return A;
+}
+
+std::vector<std::complex<double>> dqBeltChainEigenvalues(const DqBeltChain& c) {
+    return sortedEigenvalues(dqBeltChainJacobian(c));
+}
+
+std::vector<std::complex<double>> staticBeltChainEigenvalues(const DqBeltChain& c) {
+    return sortedEigenvalues(staticBeltChainMatrix(c));
+}
+
+std::complex<double> dqBeltChainBeltResponse(const DqBeltChain& c, double P, std::complex<double> torque,
+                                             bool staticSlope) {
+    // States: fifth-order x = (i_qs, i_ds, i'_qr, i'_dr, ω1, φ, ω2); static
+    // x = (ω1, φ, ω2). The forcing enters ω2's row as torque/J2.
+    const Eigen::MatrixXd A = staticSlope ? staticBeltChainMatrix(c) : dqBeltChainJacobian(c);
+    const int n = static_cast<int>(A.rows()), w1 = staticSlope ? 0 : 4;
+    Eigen::VectorXcd b = Eigen::VectorXcd::Zero(n);
+    b[w1 + 2] = torque / c.flywheelInertia;
+    const Eigen::MatrixXcd Z = std::complex<double>(0, P) * Eigen::MatrixXcd::Identity(n, n) - A.cast<std::complex<double>>();
+    const Eigen::VectorXcd x = Z.fullPivLu().solve(b);
+    // Belt torque k·φ + c·(ω1 − n·ω2).
+    return c.stiffness * x[w1 + 1] + c.damping * (x[w1] - c.ratio * x[w1 + 2]);
 }
 
 }  // namespace milldyn::oracles

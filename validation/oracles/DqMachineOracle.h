@@ -155,6 +155,13 @@ std::vector<std::complex<double>> dqBeltChainEigenvalues(const DqBeltChain& chai
 /// Same chain with the machine as its static torque–speed slope at the
 /// operating point (the T circuit's dT/dω): three eigenvalues.
 std::vector<std::complex<double>> staticBeltChainEigenvalues(const DqBeltChain& chain);
+/// The same linearized chain's steady harmonic response: the complex
+/// amplitude of the belt torque k·φ + c·(ω1 − n·ω2) [N*m] when a torque
+/// Re(torque·e^{iPt}) [N*m] acts on the flywheel (in its direction of
+/// rotation) at P [rad/s]: (iP·I − A)·x̂ = b, b = torque/J2 in ω2's row.
+/// staticSlope: the three-state chain with the T circuit's slope.
+std::complex<double> dqBeltChainBeltResponse(const DqBeltChain& chain, double P, std::complex<double> torque,
+                                             bool staticSlope = false);
 
 /// Time [s] at which a sampled run first reaches `fraction` of its last
 /// sample's speed, linearly interpolated between samples; NaN if never.
