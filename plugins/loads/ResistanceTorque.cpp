@@ -119,6 +119,8 @@ void registerResistanceTorque(ElementRegistry& registry) {
         P::quantity("feed_start_time", "s", "feed law: the feed opens at this time (mill started empty)")
             .optional(0.0).atLeast(0),
     };
+    s.regularisationSpeedKey = "smoothing_speed";
+    s.adjustableResistanceKey = "constant_torque";
     registry.add({std::move(s), buildResistanceTorque});
 }
 
