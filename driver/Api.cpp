@@ -105,6 +105,7 @@ ModelInfo describeModel(const ModelSpec& spec) {
         info.timeIntegration = "none (" + spec.scenario.type + " analysis)";
     }
     for (const auto& p : scene->probes()) info.outputs.push_back({p.name, p.unit});
+    info.contributions = scene->elementRecords();
     const std::string noGravity = gravityWarning(spec, defaultModelReader());
     if (!noGravity.empty()) info.warnings.push_back(noGravity);
     info.notes = spec.readNotes;

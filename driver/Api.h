@@ -88,6 +88,9 @@ struct ModelInfo {
     std::vector<Output> outputs;
     std::vector<std::string> warnings;  ///< e.g. elements that need gravity in a model without it
     std::vector<std::string> notes;     ///< what the reader did (an analysis switched by --set, keys dropped)
+    /// What each element registered with the scene (Scene::elementRecords),
+    /// in build order.
+    std::vector<ElementRecord> contributions;
 };
 /// Builds the scene (throws SpecError like a run would) and describes it.
 ModelInfo describeModel(const ModelSpec& spec);

@@ -385,6 +385,16 @@ int commandInfo(const Arguments& a, std::ostream& out) {
         for (const auto& n : info.notBuilt) j["not_built"].push_back({{"what", n.what}, {"why", n.why}});
         j["outputs"] = nlohmann::ordered_json::object();
         for (const auto& p : info.outputs) j["outputs"][p.name] = p.unit;
+        j["contributions"] = nlohmann::ordered_json::object();
+        for (const auto& r : info.contributions) {
+            nlohmann::ordered_json items = nlohmann::ordered_json::array();
+            for (const auto& c : r.contributions)
+                items.push_back({{"kind", contributionKindName(c.kind)},
+                                 {"name", c.name},
+                                 {"shaft", c.shaft},
+                                 {"detail", c.detail}});
+            j["contributions"][r.element] = {{"type", r.type}, {"items", items}};
+        }
         out << j.dump(2) << "\n";
         return 0;
     }
@@ -419,6 +429,15 @@ int commandInfo(const Arguments& a, std::ostream& out) {
     if (!info.notBuilt.empty()) {
         out << "  not built:\n";
         for (const auto& n : info.notBuilt) out << "    " << n.what << " — " << n.why << "\n";
+    }
+    if (!info.contributions.empty()) {
+        out << "  contributions (what each element registered):\n";
+        for (const auto& r : info.contributions) {
+            out << "    " << r.element << " (" << r.type << ")" << (r.contributions.empty() ? ": nothing" : "") << "\n";
+            for (const auto& c : r.contributions)
+                out << "      " << contributionKindName(c.kind) << " " << c.name
+                    << (c.detail.empty() ? "" : " " + c.detail) << (c.shaft.empty() ? "" : ", on " + c.shaft) << "\n";
+        }
     }
     out << "  time integration: " << info.timeIntegration << "\n";
     out << "  outputs:";

@@ -18,11 +18,53 @@ bool isOrUnder(const std::string& name, const std::string& parent) {
     return name == parent || name.compare(0, parent.size() + 1, parent + ".") == 0;
 }
 
+/// Every body an element names (its body keys, in schema order, each once),
+/// joined by ", ": the shaft a contribution record gives a probe that names
+/// none (a coupling's torque acts on both its bodies).
+std::string elementBodies(const ElementSpec& e) {
+    const ElementType* type = ElementRegistry::instance().find(e.type);
+    if (!type) return "";
+    std::vector<std::string> distinct;
+    auto add = [&distinct](const std::string& n) {
+        if (!n.empty() && std::find(distinct.begin(), distinct.end(), n) == distinct.end()) distinct.push_back(n);
+    };
+    for (const auto& p : type->schema.params) {
+        const auto v = e.params.find(p.key);
+        if (v == e.params.end()) continue;
+        if (p.kind == ParamKind::BodyRef) add(v->second.text);
+        if (p.kind == ParamKind::BodyPair || p.kind == ParamKind::BodyList)
+            for (const auto& n : v->second.names) add(n);
+    }
+    std::string out;
+    for (const auto& n : distinct) out += (out.empty() ? "" : ", ") + n;
+    return out;
+}
+
 std::string suggestion(const std::string& word, const std::vector<std::string>& names) {
     const std::string near = nearestName(word, names);
     return near.empty() ? "" : " (did you mean '" + near + "'?)";
 }
 }  // namespace
+
+std::string elementShaft(const ElementSpec& e) {
+    const ElementType* type = ElementRegistry::instance().find(e.type);
+    if (!type) return "";
+    for (const auto& p : type->schema.params) {
+        const auto v = e.params.find(p.key);
+        if (v == e.params.end()) continue;
+        if (p.kind == ParamKind::BodyRef && !v->second.text.empty()) return v->second.text;
+        if (p.kind == ParamKind::BodyPair && !v->second.names.empty()) return v->second.names.front();
+        if (p.kind == ParamKind::BodyList && !v->second.names.empty()) {
+            std::vector<std::string> distinct;
+            for (const auto& n : v->second.names)
+                if (std::find(distinct.begin(), distinct.end(), n) == distinct.end()) distinct.push_back(n);
+            std::string out;
+            for (const auto& n : distinct) out += (out.empty() ? "" : ", ") + n;
+            return out;
+        }
+    }
+    return "";
+}
 
 std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
     auto scene = std::make_unique<Scene>();
@@ -76,7 +118,13 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
             continue;
         }
         try {
+            // Everything the element registers is recorded under it
+            // (Scene::beginElement), with its regularisation speed.
+            scene->beginElement(e.name, e.type);
             type->build(e, *scene);
+            if (const std::string& key = type->schema.regularisationSpeedKey; !key.empty())
+                scene->addRegularisationSpeed({e.name, key, e.number(key)});
+            scene->endElement(elementBodies(e));
         } catch (const std::invalid_argument& err) {
             throw SpecError(e.where, e.name, err.what());
         } catch (const SimTK::Exception::Base& err) {

@@ -43,6 +43,21 @@ std::string formatSchemas(const ModelFileReader& reader, const std::vector<std::
         out << name << (s->doc.empty() ? "" : " — " + s->doc) << "\n";
         for (const auto& p : s->params)
             out << "  " << p.key << ": " << describeParam(p) << (p.doc.empty() ? "" : " — " + p.doc) << "\n";
+        // Capabilities the generic analyses read (ElementSchema, issue 31 item 4).
+        if (!s->regularisationSpeedKey.empty())
+            out << "  capability: regularised below " << s->regularisationSpeedKey
+                << " (a run-out's stop_speed must be at least 5 times it)\n";
+        if (!s->adjustableResistanceKey.empty())
+            out << "  capability: adjustable resistance " << s->adjustableResistanceKey
+                << " (coastdown_identify's resistance)\n";
+        for (const auto& need : s->analysisNeeds)
+            out << "  capability: " << need.key << ": " << need.value << " — " << need.why << " ("
+                << (need.kind == ElementSchema::AnalysisNeed::Kind::EachInstant
+                        ? "kinetostatic, or a replayed transient"
+                        : "an integrated transient only")
+                << ")\n";
+        for (const auto& [key, what] : s->initialStateKeys)
+            out << "  capability: " << key << " sets " << what << " at t = 0 (transient, initial_state: file only)\n";
         out << "\n";
     }
     return out.str();

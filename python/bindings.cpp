@@ -246,6 +246,15 @@ PYBIND11_MODULE(_milldyn, m) {
         d["outputs"] = outputs;
         d["warnings"] = i.warnings;  // as `milldyn info` prints them (a model without gravity, ...)
         d["notes"] = i.notes;        // what the reader did (an analysis switched by set, keys dropped)
+        // What each element registered (issue 31): {element: (type, [(kind, name, shaft, detail)])}.
+        py::dict contributions;
+        for (const auto& r : i.contributions) {
+            py::list items;
+            for (const auto& c : r.contributions)
+                items.append(py::make_tuple(contributionKindName(c.kind), c.name, c.shaft, c.detail));
+            contributions[py::str(r.element)] = py::make_tuple(r.type, items);
+        }
+        d["contributions"] = contributions;
         return d;
     });
 

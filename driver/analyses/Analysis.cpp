@@ -1,6 +1,7 @@
 #include "driver/analyses/Analysis.h"
 
 #include "driver/ModelFile.h"
+#include "driver/SceneBuilder.h"
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/EnergyMeter.h"
 #include "plugins/scene/Format.h"
@@ -87,7 +88,8 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
                    "switch-off last a measured time (root-finding on simulations).";
     identify.params = {
         P::quantity("runout_time", "s", "measured run-out time t_v").above(0).atMost(1e4),
-        P::text("resistance", "name of the ResistanceTorque element whose constant_torque is identified"),
+        P::text("resistance", "name of the element whose constant resistance torque is identified (of a type that "
+                                  "declares one adjustable; milldyn elements lists them)"),
         P::body("runout_body", "body whose run-out is measured (the millstone)"),
         P::choice("runout_measure", {"body_stop", "mean_speed"},
                   "body_stop: first stop of runout_body; mean_speed: zero of the momentum-weighted "
@@ -277,28 +279,30 @@ AnalysisResult runModelFile(const std::string& path, const std::vector<Override>
 namespace {
 
 AnalysisResult dispatchAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
-    // A charge held at its lag is a condition of one instant (its wall
-    // torque is solved per configuration), not a law a time step can use:
-    // kinetostatics, or a transient that is replayed instant by instant
-    // (checked by the transient once its scene is built).
-    if (spec.scenario.type != "kinetostatic" && spec.scenario.type != "transient")
-        for (const auto& e : spec.elements)
-            if (e.type == "SegmentCharge" && e.text("motion") == "held")
-                throw e.error("motion", "a held charge is a kinetostatic model; analysis '" + spec.scenario.type +
-                                            "' needs motion: with_drum or dynamic_lag");
-    // A charge's initial_speed_fraction sets the drum's speed at t = 0: only
-    // a transient from the file's state keeps it (rest zeroes it, steady
-    // running solves it).
-    for (const auto& e : spec.elements)
-        if (e.type == "SegmentCharge" && e.params.count("initial_speed_fraction") &&
-            e.params.at("initial_speed_fraction").given &&
-            !(spec.scenario.type == "transient" && spec.scenario.text("initial_state") == "file"))
-            throw e.error("initial_speed_fraction", "sets the drum's speed at t = 0, which only a transient with "
-                                                    "initial_state: file keeps");
-    for (const auto& e : spec.elements)
-        if (e.type == "SegmentCharge" && e.text("motion") == "frozen" && spec.scenario.type != "transient")
-            throw e.error("motion", "a frozen charge is lifted and released along a run: analysis '" +
-                                        spec.scenario.type + "' needs another motion (transient only)");
+    // What an element's setting needs of the analysis (a condition of each
+    // instant, a history along a run; its schema's analysisNeeds), and
+    // keys that set the state at t = 0: the transient checks its own
+    // (replayed or integrated) once its scene is built.
+    const std::string& analysis = spec.scenario.type;
+    for (const auto& e : spec.elements) {
+        const ElementSchema* s = schemaOf(e);
+        if (!s) continue;
+        for (const auto& need : s->analysisNeeds) {
+            if (!need.matches(e)) continue;
+            using Kind = ElementSchema::AnalysisNeed::Kind;
+            if (need.kind == Kind::EachInstant && analysis != "kinetostatic" && analysis != "transient")
+                throw e.error(need.key, need.value + ": " + need.why + " (a kinetostatic model): analysis '" +
+                                            analysis + "' cannot solve it; use " + need.alternative);
+            if (need.kind == Kind::StepHistory && analysis != "transient")
+                throw e.error(need.key, need.value + ": " + need.why + ": analysis '" + analysis +
+                                            "' has no run to carry it along (transient only); use " +
+                                            need.alternative);
+        }
+        for (const auto& [key, what] : s->initialStateKeys)
+            if (e.params.count(key) && e.params.at(key).given &&
+                !(analysis == "transient" && spec.scenario.text("initial_state") == "file"))
+                throw e.error(key, "sets " + what + " at t = 0, which only a transient with initial_state: file keeps");
+    }
     if (spec.scenario.type == "transient") return runTransient(spec, progress, observer);
     if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
     if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
@@ -380,23 +384,7 @@ std::string probeShaft(const ModelSpec& spec, const std::string& probeName) {
     const std::size_t dot = probeName.find('.');
     if (dot == std::string::npos || probeName.find('.', dot + 1) != std::string::npos) return "";
     const ElementSpec* e = spec.findElement(probeName.substr(0, dot));
-    const ElementType* type = e ? ElementRegistry::instance().find(e->type) : nullptr;
-    if (!type) return "";
-    for (const auto& p : type->schema.params) {
-        const auto v = e->params.find(p.key);
-        if (v == e->params.end()) continue;
-        if (p.kind == ParamKind::BodyRef && !v->second.text.empty()) return v->second.text;
-        if (p.kind == ParamKind::BodyPair && !v->second.names.empty()) return v->second.names.front();
-        if (p.kind == ParamKind::BodyList && !v->second.names.empty()) {
-            std::vector<std::string> distinct;
-            for (const auto& n : v->second.names)
-                if (std::find(distinct.begin(), distinct.end(), n) == distinct.end()) distinct.push_back(n);
-            std::string out;
-            for (const auto& n : distinct) out += (out.empty() ? "" : ", ") + n;
-            return out;
-        }
-    }
-    return "";
+    return e ? elementShaft(*e) : "";
 }
 
 std::string elementsOnBody(const ModelSpec& spec, const std::string& body) {
@@ -437,14 +425,22 @@ double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role) 
     return sum;
 }
 
+const ElementSchema* schemaOf(const ElementSpec& e) {
+    const ElementType* type = ElementRegistry::instance().find(e.type);
+    return type ? &type->schema : nullptr;
+}
+
 void checkStopSpeed(const ModelSpec& spec) {
     const double stop = spec.scenario.number("stop_speed");
-    for (const auto& e : spec.elements)
-        if (e.type == "ResistanceTorque" && stop < 5 * e.number("smoothing_speed"))
-            throw spec.scenario.error("stop_speed",
-                                      "must be at least 5 times the smoothing_speed of " + e.name + " (" +
-                                          std::to_string(e.number("smoothing_speed")) +
-                                          " rad/s): below that the load is no longer the model's law");
+    for (const auto& e : spec.elements) {
+        const ElementSchema* s = schemaOf(e);
+        if (!s || s->regularisationSpeedKey.empty()) continue;
+        const std::string& key = s->regularisationSpeedKey;
+        if (stop < 5 * e.number(key))
+            throw spec.scenario.error("stop_speed", "must be at least 5 times the " + key + " of " + e.name + " (" +
+                                                        std::to_string(e.number(key)) +
+                                                        " rad/s): below that the load is no longer the model's law");
+    }
 }
 
 Simulation::Watch speedWatch(const SimTK::MobilizedBody& body, double threshold, double notBefore,

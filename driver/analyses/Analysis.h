@@ -137,6 +137,8 @@ double sumProbes(const Scene& scene, const SimTK::State& state, ProbeRole role);
 /// Throws SpecError if scenario.stop_speed lies inside a load's
 /// regularisation band.
 void checkStopSpeed(const ModelSpec& spec);
+/// The registered schema of `e`'s type (its capabilities); nullptr if unknown.
+const ElementSchema* schemaOf(const ElementSpec& e);
 
 /// Watches a body's speed falling to zero (stop detected at `threshold`).
 Simulation::Watch speedWatch(const SimTK::MobilizedBody& body, double threshold, double notBefore,

@@ -10,6 +10,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/Format.h"
 
 #include <cmath>
@@ -59,6 +60,16 @@ struct Trial {
     double momentum = 0;
 };
 
+/// The registered element types whose resistance an identification may
+/// adjust (ElementSchema::adjustableResistanceKey).
+std::string adjustableResistanceTypes() {
+    std::string out;
+    for (const std::string& name : ElementRegistry::instance().typeNames())
+        if (!ElementRegistry::instance().find(name)->schema.adjustableResistanceKey.empty())
+            out += (out.empty() ? "" : ", ") + name;
+    return out.empty() ? "none" : out;
+}
+
 class CoastdownProblem {
 public:
     explicit CoastdownProblem(const ModelSpec& spec) : m_base(spec) {
@@ -66,8 +77,12 @@ public:
         checkStopSpeed(spec);
         m_resistance = sc.text("resistance");
         const ElementSpec* e = spec.findElement(m_resistance);
-        if (!e || e->type != "ResistanceTorque")
-            throw sc.error("resistance", "'" + m_resistance + "' is not a ResistanceTorque element of this model");
+        const ElementSchema* schema = e ? schemaOf(*e) : nullptr;
+        if (!schema || schema->adjustableResistanceKey.empty())
+            throw sc.error("resistance", "'" + m_resistance +
+                                             "' is not an element of this model with an adjustable resistance torque "
+                                             "(types with one: " + adjustableResistanceTypes() + ")");
+        m_resistanceKey = schema->adjustableResistanceKey;
         m_meanSpeed = sc.text("runout_measure") == "mean_speed";
         m_runoutBody = sc.text("runout_body");
     }
@@ -82,7 +97,7 @@ public:
     Trial simulate(double Mc, double endLimit, AnalysisResult* record, bool budgeted = false) {
         ModelSpec spec = m_base;
         for (auto& e : spec.elements)
-            if (e.name == m_resistance) e.params["constant_torque"].number = Mc;
+            if (e.name == m_resistance) e.params[m_resistanceKey].number = Mc;
         auto scene = buildScene(spec);
         SimTK::State steady = solveSteadyState(*scene, initialState(*scene, spec));
 
@@ -130,7 +145,11 @@ public:
             };
         }
 
-        scene->setDrivesOn(steady, false);
+        try {
+            scene->setDrivesOn(steady, false);
+        } catch (const std::invalid_argument& err) {  // a drive that cannot be switched off
+            throw m_base.scenario.error("analysis", err.what());
+        }
         Simulation sim(*scene, spec.integrator);
         sim.initialize(steady);
         std::unique_ptr<SampleTable> table;
@@ -306,12 +325,13 @@ public:
     RunStatistics statistics() const { return m_statistics; }
     int trials() const { return m_trials; }
     double startGuess() const {
-        return m_base.findElement(m_resistance)->params.at("constant_torque").number;
+        return m_base.findElement(m_resistance)->params.at(m_resistanceKey).number;
     }
 
 private:
     ModelSpec m_base;
     std::string m_resistance;
+    std::string m_resistanceKey;  ///< its schema's adjustableResistanceKey
     std::string m_runoutBody;
     bool m_meanSpeed = false;
     RunStatistics m_statistics;

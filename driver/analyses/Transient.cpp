@@ -6,7 +6,6 @@
 #include "driver/analyses/MotorReports.h"
 #include "driver/analyses/SteadyStart.h"
 #include "driver/analyses/Trajectory.h"
-#include "plugins/loads/BreakawayResistance.h"
 #include "plugins/scene/Format.h"
 
 #include <algorithm>
@@ -175,16 +174,15 @@ SequenceLists sequencesAt(const Scene& scene, const SimTK::State& state) {
     return lists;
 }
 
-/// Hook (issue 27): "; <why>" for each BreakawayResistance still holding
-/// its shaft below its release speed at `end`, so a stall names the
-/// breakaway that was not passed; "" when none.
-std::string breakawayReasons(const Scene& scene, const ModelSpec& spec, const SimTK::State& end) {
+/// Hook (issue 27): "; <why>" for each start hold (Scene::startHolds, a
+/// breakaway) still holding its shaft at `end`, so a stall names the hold
+/// that was not passed; "" when none.
+std::string startHoldReasons(const Scene& scene, const SimTK::State& end) {
     std::string out;
-    for (const ElementSpec& e : spec.elements)
-        if (const auto* b = scene.findElement<BreakawayResistance>(e.name)) {
-            const std::string why = b->stallReason(e.name, end);
-            if (!why.empty()) out += "; " + why;
-        }
+    for (const Scene::StartHold& h : scene.startHolds()) {
+        const std::string why = h.stallReason(end);
+        if (!why.empty()) out += "; " + why;
+    }
     return out;
 }
 
@@ -252,7 +250,7 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
                              "; there the drive torque is " + (drive.empty() ? "none" : drive) +
                              " against the load torque " + (load.empty() ? "none" : load) +
                              " (each on its own shaft): the drive cannot take the load past this speed" +
-                             breakawayReasons(scene, spec, end);
+                             startHoldReasons(scene, end);
     } else {
         result.verdict = "unfinished";
         result.verdictText = "start unfinished: " + body.name + " was at " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
@@ -388,21 +386,25 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
 
     Simulation sim(*scene, spec.integrator);
     sim.initialize(state, sc.text("zero_dof") == "replay");
-    // A held charge's wall torque is an instant unknown: only a replayed run
-    // solves it at every sample.
-    for (const auto& e : spec.elements)
-        if (e.type == "SegmentCharge" && e.text("motion") == "held" && !sim.isReplay())
-            throw e.error("motion", "a held charge is a condition of each instant: a transient with one must have no "
-                                    "free degree of freedom and be replayed (" +
-                                        (sc.text("zero_dof") == "integrate" ? std::string("zero_dof is integrate")
-                                                                            : sim.replayReason()) +
-                                        "); use motion: with_drum or dynamic_lag");
-    // A frozen charge's release is a latch carried from step to step; a
-    // replay places each sample from the time alone and would never latch.
-    for (const auto& e : spec.elements)
-        if (e.type == "SegmentCharge" && e.text("motion") == "frozen" && sim.isReplay())
-            throw e.error("motion", "frozen: the release is carried from step to step, and this run would be "
-                                    "replayed (" + sim.replayReason() + "): set scenario.zero_dof: integrate");
+    // A condition of each instant (a held charge's wall torque) is solved
+    // only by a replay, at every sample; a history along the run (a frozen
+    // charge's release latch) only by an integration (ElementSchema::analysisNeeds).
+    for (const auto& e : spec.elements) {
+        const ElementSchema* s = schemaOf(e);
+        for (const auto& need : s ? s->analysisNeeds : std::vector<ElementSchema::AnalysisNeed>{}) {
+            if (!need.matches(e)) continue;
+            if (need.kind == ElementSchema::AnalysisNeed::Kind::EachInstant && !sim.isReplay())
+                throw e.error(need.key, need.value + ": " + need.why +
+                                            ": a transient with one must have no free degree of freedom and be "
+                                            "replayed (" +
+                                            (sc.text("zero_dof") == "integrate" ? std::string("zero_dof is integrate")
+                                                                                : sim.replayReason()) +
+                                            "); use " + need.alternative);
+            if (need.kind == ElementSchema::AnalysisNeed::Kind::StepHistory && sim.isReplay())
+                throw e.error(need.key, need.value + ": " + need.why + ", and this run would be replayed (" +
+                                            sim.replayReason() + "): set scenario.zero_dof: integrate");
+        }
+    }
     const SimTK::State first = sim.state();
     if (start == "steady") checkSteadyStart(*scene, spec, state, first);
 

@@ -689,6 +689,14 @@ void registerSegmentCharge(ElementRegistry& registry) {
     ElementSchema s;
     s.type = "SegmentCharge";
     s.needsGravity = true;
+    // What a motion needs of the analysis (checked by the dispatch and the transient).
+    using Need = ElementSchema::AnalysisNeed;
+    s.analysisNeeds = {
+        {"motion", "held", Need::Kind::EachInstant, "a held charge's wall torque is solved at each instant",
+         "motion: with_drum or dynamic_lag"},
+        {"motion", "frozen", Need::Kind::StepHistory, "the release is carried from step to step", "another motion"},
+    };
+    s.initialStateKeys = {{"initial_speed_fraction", "the drum's speed"}};
     s.doc = "Grinding charge as a circular segment in a drum (rigid with it, held at a lag, dragged, or a torque arm).";
     s.params = {
         P::body("drum", "drum (on a pin on its carrier, or on ground) holding the charge"),

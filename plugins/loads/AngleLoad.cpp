@@ -440,6 +440,7 @@ void registerAngleLoad(ElementRegistry& registry) {
         if (shape == "shaped_pulse" && !e.has("pulse_torques"))
             throw e.error("pulse_torques", "shape shaped_pulse needs pulse_torques");
     };
+    s.regularisationSpeedKey = "smoothing_speed";
     registry.add({std::move(s), buildAngleLoad});
 }
 

@@ -69,6 +69,8 @@ void buildBreakawayResistance(const ElementSpec& spec, Scene& scene) {
     auto* impl = new BreakawayResistance(shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
+    const std::string name = spec.name;
+    scene.addStartHold({name, [impl, name](const SimTK::State& s) { return impl->stallReason(name, s); }});
     const SimTK::MobilizedBody mobod = shaft->mobod;
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, SimTK::Stage::Velocity,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
@@ -114,6 +116,7 @@ void registerBreakawayResistance(ElementRegistry& registry) {
                                                  formatNumber(e.number("release_speed") / 10) +
                                                  " rad/s): the static torque must be reached before it releases");
     };
+    s.regularisationSpeedKey = "smoothing_speed";
     registry.add({std::move(s), buildBreakawayResistance});
 }
 

@@ -203,6 +203,7 @@ void registerPeriodicLoad(ElementRegistry& registry) {
         if (e.has("arrangement"))
             throw e.error("phases", "give phases or arrangement, not both");
     };
+    s.regularisationSpeedKey = "smoothing_speed";
     registry.add({std::move(s), buildPeriodicLoad});
 }
 

@@ -124,6 +124,8 @@ void registerResistanceTorque(ElementRegistry& registry) {
             .optional(0.0).atLeast(0),
         scheduleParam("schedule", "f(t) multiplying the torque: {ramp|step_recovery|sine|table: ...} (default 1)"),
     };
+    s.regularisationSpeedKey = "smoothing_speed";
+    s.adjustableResistanceKey = "constant_torque";
     registry.add({std::move(s), buildResistanceTorque});
 }
 

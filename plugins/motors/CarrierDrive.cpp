@@ -78,7 +78,17 @@ void buildCarrierDrive(const ElementSpec& spec, Scene& scene) {
         scene.addDerivedValue({spec.name + ".initial_acceleration", impl->calcInitialAcceleration(), "rad/s^2",
                                "ε0 = ω_y/(τ (1 − e^(−t_p/τ))) of ε = ε0 e^(−t/τ) (seed 000, Fig. 6; ε0 = ω_y/(1 − "
                                "e^(−t_p)) with the paper's τ = 1 s)"});
-    scene.addSpeedHint(body->name, p.steadySpeed);
+    // A prescribed motion cannot be switched off (its body would stop
+    // following the law a replay places it by): a coast-down refuses it.
+    const std::string name = spec.name;
+    scene.addDrive({name, body->name, p.steadySpeed, INFINITY,
+                    [name](State&, bool on) {
+                        if (!on)
+                            throw std::invalid_argument("CarrierDrive " + name +
+                                                        " prescribes its body's motion and cannot be switched off "
+                                                        "(a coast-down needs a motor)");
+                    },
+                    "prescribed " + spec.text("law") + " law"});
     scene.addPrescribedTrajectory(
         {body->name, mobod, [impl](double t0, double u0, double t) { return impl->calcAdvance(t0, u0, t); }});
     scene.note("motion " + spec.name + " (CarrierDrive, " + spec.text("law") + ")",

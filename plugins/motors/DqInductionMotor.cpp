@@ -177,7 +177,7 @@ DqInductionMotor::Electrical DqInductionMotor::calcElectrical(const SimTK::State
     el.r = sup.resistance;
     el.f = calcSupplyFrequency(s);
     el.u = isConverter() ? p.voltageBoost + (1 - p.voltageBoost) * el.f : sup.voltage * std::sqrt(sup.connection);
-    el.open = isStatorOpen(s);
+    el.open = isStatorOpen(s) || !isOn(s);
     const double R[3] = {p.statorResistance, el.r * p.rotorResistance, p.rotorResistance2};
     if (el.open) {
         el.current[0] = 0;
@@ -275,17 +275,28 @@ bool DqInductionMotor::isStatorOpen(const SimTK::State& s) const {
     return SimTK::Value<bool>::downcast(m_forces.getDiscreteVariable(s, m_openIndex));
 }
 
+bool DqInductionMotor::isOn(const SimTK::State& s) const {
+    return SimTK::Value<bool>::downcast(m_forces.getDiscreteVariable(s, m_onIndex));
+}
+
+void DqInductionMotor::setOn(SimTK::State& s, bool on) const {
+    if (!on && isOn(s) && !isStatorOpen(s)) openStatorFluxes(s);
+    SimTK::Value<bool>::updDowncast(m_forces.updDiscreteVariable(s, m_onIndex)) = on;
+}
+
 void DqInductionMotor::setStatorOpen(SimTK::State& s, bool open) const {
-    if (open && !isStatorOpen(s)) {
-        // i_s → 0 with the rotor's flux linkages continuous: ψ_s = Lm·Σ i_r.
-        Complex statorFlux = 0;
-        for (int k = 0; k < m_nr; ++k)
-            for (int j = 0; j < m_nr; ++j) statorFlux += m_params.mainInductance * m_Grr[k][j] * flux(s, 1 + j);
-        SimTK::Vector& z = m_forces.updZ(s);
-        z[m_flux] = statorFlux.real();
-        z[m_flux + 1] = statorFlux.imag();
-    }
+    if (open && !isStatorOpen(s) && isOn(s)) openStatorFluxes(s);
     SimTK::Value<bool>::updDowncast(m_forces.updDiscreteVariable(s, m_openIndex)) = open;
+}
+
+void DqInductionMotor::openStatorFluxes(SimTK::State& s) const {
+    // i_s → 0 with the rotor's flux linkages continuous: ψ_s = Lm·Σ i_r.
+    Complex statorFlux = 0;
+    for (int k = 0; k < m_nr; ++k)
+        for (int j = 0; j < m_nr; ++j) statorFlux += m_params.mainInductance * m_Grr[k][j] * flux(s, 1 + j);
+    SimTK::Vector& z = m_forces.updZ(s);
+    z[m_flux] = statorFlux.real();
+    z[m_flux + 1] = statorFlux.imag();
 }
 
 StartSequenceState DqInductionMotor::calcStarterProgress(const SimTK::State& s) const {
@@ -382,6 +393,7 @@ void DqInductionMotor::realizeTopology(SimTK::State& s) const {
     m_stepIndex = m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<int>(0));
     m_finishedIndex = m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<bool>(false));
     m_openIndex = m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<bool>(false));
+    m_onIndex = m_forces.allocateDiscreteVariable(s, SimTK::Stage::Dynamics, new SimTK::Value<bool>(true));
     // A record only (read by a probe): changing it invalidates nothing the motion needs.
     m_dipIndex = m_forces.allocateDiscreteVariable(s, SimTK::Stage::Report, new SimTK::Value<double>(0.0));
 }
@@ -681,7 +693,9 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     if (p.interruptionDuration > 0) openInterval(p.interruptionTime, p.interruptionDuration, "supply interruption");
     // Steady running with the field built up (not switched on unexcited).
     scene.addSteadyInitializer([impl](SimTK::State& s) { impl->setSteadyFluxes(s); });
-    scene.addSpeedHint(shaft->name, 2 * M_PI * p.frequency / p.polePairs);
+    // The drive facet: on/off, switch-off, speed hint (synchronous), starter.
+    scene.addDrive({spec.name, shaft->name, 2 * M_PI * p.frequency / p.polePairs, spec.number("switch_off_time"),
+                    [impl](SimTK::State& s, bool on) { impl->setOn(s, on); }, Starter::kindName(st.kind)});
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::DriveTorque, SimTK::Stage::Dynamics,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
     scene.addProbe({spec.name + ".power", "W", ProbeRole::Generic, SimTK::Stage::Dynamics,
@@ -811,6 +825,9 @@ void registerDqInductionMotor(ElementRegistry& registry) {
         P::quantity("short_circuit_power", "W", "the source's short-circuit power S_k [VA] (default: stiff)").optional(never).above(0),
         P::quantity("source_x_r", "1", "the source's X/R").optional(10.0).above(0),
         P::quantity("voltage_dip_limit", "1", "largest voltage dip accepted at the supply point").optional(never).above(0).below(1),
+        P::quantity("switch_off_time", "s", "supply switched off (stator opened) at this time (default never)")
+            .optional(never)
+            .atLeast(0),
     };
     s.crossCheck = crossCheckDqInductionMotor;
     registry.add({std::move(s), buildDqInductionMotor});

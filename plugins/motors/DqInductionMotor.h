@@ -95,7 +95,8 @@ struct DqInductionMotorParams {
  * factor (i_grid ∥ e, |i_grid| = P/(1.5·|e|)), so its dip is
  * 1 − |1 − Z_k·i_grid/e|.
  *
- * Stator open (an open star–delta transition, a supply interruption): i_s = 0,
+ * Stator open (an open star–delta transition, a supply interruption, the
+ * motor switched off: switch_off_time, a coast-down's switch at t = 0): i_s = 0,
  * so ψ_s jumps to Lm·Σi_r at the opening (the rotor's flux linkages are
  * continuous; the stator's field energy goes into the switch's arc) and the
  * rotor currents decay with the rotor's time constant while the flux turns
@@ -152,6 +153,11 @@ public:
     bool isStatorOpen(const SimTK::State& state) const;
     /// Opens (ψ_s to Lm·Σi_r) or closes the stator.
     void setStatorOpen(SimTK::State& state, bool open) const;
+    /// Switched on (supplied) or off (switch_off_time, a coast-down's
+    /// switch at t = 0): off, the stator is open as in an interruption,
+    /// for good (an interruption's reclosure does not close it).
+    bool isOn(const SimTK::State& state) const;
+    void setOn(SimTK::State& state, bool on) const;
     StartSequenceState calcStarterProgress(const SimTK::State& state) const;
     /// Ends the starter's sequence in `state` for good (steady running).
     void finishStarter(SimTK::State& state) const;
@@ -196,6 +202,8 @@ private:
         bool open = false;
     };
     Electrical calcElectrical(const SimTK::State& state) const;
+    /// The flux jump of an opening: ψ_s = Lm·Σ_k (Γ_rr·ψ_r)_k (i_s = 0).
+    void openStatorFluxes(SimTK::State& state) const;
     std::complex<double> flux(const SimTK::State& state, int k) const;
     double supplyAngle(const SimTK::State& state) const;
     bool isConverter() const { return m_params.starter.kind == StarterParams::Kind::FrequencyConverter; }
@@ -214,6 +222,7 @@ private:
     mutable SimTK::ZIndex m_flux;  // ψsα, ψsβ, ψr1α, ψr1β[, ψr2α, ψr2β][, θ, f]
     mutable SimTK::DiscreteVariableIndex m_stepIndex;      // starter step
     mutable SimTK::DiscreteVariableIndex m_finishedIndex;  // bool: the starter's sequence ended
+    mutable SimTK::DiscreteVariableIndex m_onIndex;        // bool: switched on (false: off, stator open)
     mutable SimTK::DiscreteVariableIndex m_openIndex;      // bool: stator open
     mutable SimTK::DiscreteVariableIndex m_dipIndex;       // double: largest dip so far
 };

@@ -571,10 +571,10 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
     auto* impl = new InductionMotor(scene.forces(), shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);  // Simbody owns impl
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
-    scene.addSwitchable(spec.name, [impl](SimTK::State& s, bool on) { impl->setOn(s, on); });
-    if (std::isfinite(p.switchOffTime))
-        scene.addSwitchEvent({Scene::SwitchEvent::Kind::DriveOff, p.switchOffTime, spec.name + " switched off",
-                              [impl](SimTK::State& s) { impl->setOn(s, false); }});
+    // The drive facet: on/off, switch-off, speed hint (slightly below
+    // synchronous: where every motor law has its stable branch), starter.
+    scene.addDrive({spec.name, shaft->name, p.ratedSpeed, p.switchOffTime,
+                    [impl](SimTK::State& s, bool on) { impl->setOn(s, on); }, Starter::kindName(st.kind)});
     addStarterEvents(scene, spec.name, st, impl);
     const SimTK::MobilizedBody mobod = shaft->mobod;
     if (!st.switchSpeeds.empty()) {
@@ -614,8 +614,6 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
             scene.addDerivedValue({spec.name + ".hold_current", impl->curve().current(wc - impl->holdSlipSpeed()), "A",
                                    "converter: the line current the ramp holds at"});
     }
-    // Slightly below synchronous: where every motor law has its stable branch.
-    scene.addSpeedHint(shaft->name, p.ratedSpeed);
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::DriveTorque, SimTK::Stage::Dynamics,
                     [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
     scene.addProbe({spec.name + ".power", "W", ProbeRole::Generic, SimTK::Stage::Dynamics,

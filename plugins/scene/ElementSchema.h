@@ -135,6 +135,37 @@ struct ElementSchema {
     /// gets a warning naming it (issue 20 item 8).
     bool needsGravity = false;
 
+    // Capabilities generic code asks for instead of type names (issue 31
+    // item 4; docs/architecture.md "Element capabilities"). Empty: none.
+
+    /// A setting that ties the element to certain analyses: with key `key`
+    /// at text `value`, the element is
+    ///   EachInstant: a condition of each instant, solved per configuration
+    ///                (a held charge's wall torque): kinetostatic, or a
+    ///                transient replayed sample by sample;
+    ///   StepHistory: a history carried from step to step (a frozen
+    ///                charge's release latch): an integrated transient only.
+    struct AnalysisNeed {
+        enum class Kind { EachInstant, StepHistory };
+        std::string key, value;
+        Kind kind = Kind::EachInstant;
+        std::string why;          ///< "a held charge's wall torque is solved at each instant"
+        std::string alternative;  ///< what to give instead: "motion: with_drum or dynamic_lag"
+        bool matches(const ElementSpec& e) const { return e.has(key) && e.text(key) == value; }
+    };
+    std::vector<AnalysisNeed> analysisNeeds;
+    /// Keys that set the state at t = 0, with what they set ("the drum's
+    /// speed"): only a transient with `initial_state: file` keeps them, so
+    /// any other analysis refuses one given.
+    std::vector<std::pair<std::string, std::string>> initialStateKeys;
+    /// Key of a speed [rad/s] below which the element's law is regularised
+    /// (a dry load's tanh smoothing at standstill): a run-out watched below
+    /// a few times it measures the regularisation, not the law.
+    std::string regularisationSpeedKey;
+    /// Key of a constant resistance torque [N*m] an identification may
+    /// adjust (coastdown_identify's `resistance`).
+    std::string adjustableResistanceKey;
+
     const ParamSchema* find(const std::string& key) const;
 };
 

@@ -44,6 +44,10 @@ struct Probe {
     /// from the downward vertical, + in the +z sense"); empty: the name and
     /// unit say it.
     std::string label = {};
+    /// The body it acts on or measures; empty: the SceneBuilder gives it
+    /// the element's bodies (every body key's, joined by ", ") when the
+    /// element's build ends (Scene::endElement).
+    std::string shaft = {};
 };
 
 /// A power flow an element declares for the energy balance: a source feeds
@@ -92,6 +96,31 @@ struct StartSequence {
     /// engaged), for good: steady running (solveSteadyState) is the machine
     /// after its start, not in its starter's first step.
     std::function<void(SimTK::State&)> finish;
+};
+
+/// One thing an element registered with the scene (issue 31 item 1):
+/// `milldyn info` lists them per element.
+struct Contribution {
+    enum class Kind {
+        Drive, Probe, EnergyFlow, SwitchEvent, DerivedValue, StartSequence, StartHold, RegularisationSpeed,
+        Excitation, KinetostaticUnknown, LaggedValue, SteadyResidual, OrderExcitation, PrescribedTrajectory,
+        SpeedRelation
+    };
+    Kind kind;
+    std::string name;    ///< as registered ("motor.torque")
+    std::string shaft;   ///< the body it acts on or measures ("" if none)
+    std::string detail;  ///< unit, role, time, value, in words
+};
+/// "probe", "energy flow", ... (the words `milldyn info` prints).
+const char* contributionKindName(Contribution::Kind kind);
+
+/// Everything one element registered, in the order it did.
+struct ElementRecord {
+    std::string element;
+    std::string type;
+    std::vector<Contribution> contributions;
+    /// The contributions of one kind.
+    std::vector<const Contribution*> of(Contribution::Kind kind) const;
 };
 
 /// One line of `milldyn info`: what was built and why.
@@ -172,8 +201,34 @@ public:
     /// Hinted speed of every body (0 where nothing reaches it).
     std::map<std::string, double> speedHints() const;
 
+    /// What every drive (a motor, a prescribed drive) gives the scene, all
+    /// in one facet (issue 31 item 1): the constructor takes every part, so
+    /// a drive that forgets one does not compile, and addDrive refuses an
+    /// empty or non-finite part when the model is built.
+    struct Drive {
+        Drive(std::string elementName, std::string shaftName, double hint, double offTime,
+              std::function<void(SimTK::State&, bool)> onOff, std::string sequence)
+            : element(std::move(elementName)), shaft(std::move(shaftName)), speedHint(hint),
+              switchOffTime(offTime), setOn(std::move(onOff)), startingSequence(std::move(sequence)) {}
+        std::string element;   ///< the drive's element name
+        std::string shaft;     ///< the body it drives
+        double speedHint;      ///< [rad/s] the speed its shaft runs near (steady-state searches start there)
+        double switchOffTime;  ///< [s] when it is switched off (a DriveOff event); +inf: never
+        /// On / off (a coast-down switches every drive off at t = 0). A
+        /// drive that cannot be switched off throws std::invalid_argument
+        /// saying why.
+        std::function<void(SimTK::State&, bool)> setOn;
+        std::string startingSequence;  ///< how it starts, in words ("direct_on_line", "prescribed ramp law")
+    };
+    /// Registers a drive: its on/off switch (addSwitchable), its switch-off
+    /// event, its speed hint. Throws std::invalid_argument naming the part
+    /// that is missing.
+    void addDrive(Drive d);
+    const std::vector<Drive>& drives() const { return m_drives; }
+
     /// Elements that can be told "you are off from now on" by an analysis
-    /// (coast-down scenarios switch the drive off at t = 0).
+    /// (coast-down scenarios switch the drive off at t = 0); drives register
+    /// through addDrive.
     void addSwitchable(const std::string& name, std::function<void(SimTK::State&, bool)> setOn);
     /// Switches every registered drive on or off in `state`.
     void setDrivesOn(SimTK::State& state, bool on) const;
@@ -262,6 +317,38 @@ public:
     void addSteadyInitializer(std::function<void(SimTK::State&)> f) { m_steadyInitializers.push_back(std::move(f)); }
     const std::vector<std::function<void(SimTK::State&)>>& steadyInitializers() const { return m_steadyInitializers; }
 
+    /// What holds a start back (a breakaway not yet passed): `stallReason`
+    /// says why a start stalled in the state at its end, "" when this hold
+    /// was passed. The start verdict appends every non-empty reason.
+    struct StartHold {
+        std::string name;
+        std::function<std::string(const SimTK::State&)> stallReason;
+    };
+    void addStartHold(StartHold h) { m_startHolds.push_back(std::move(h)); }
+    const std::vector<StartHold>& startHolds() const { return m_startHolds; }
+
+    /// A speed [rad/s] below which an element's law is regularised (the
+    /// element type's ElementSchema::regularisationSpeedKey; registered by
+    /// the SceneBuilder).
+    struct RegularisationSpeed {
+        std::string element;
+        std::string key;  ///< "smoothing_speed"
+        double speed = 0;
+    };
+    void addRegularisationSpeed(RegularisationSpeed r) { m_regularisationSpeeds.push_back(std::move(r)); }
+    const std::vector<RegularisationSpeed>& regularisationSpeeds() const { return m_regularisationSpeeds; }
+
+    /// Contribution records (issue 31 item 1): everything registered
+    /// between beginElement and endElement is recorded under that element
+    /// (the SceneBuilder opens and closes the record around each element's
+    /// build). endElement gives the element's new probes without a shaft
+    /// `defaultShaft`. Registrations outside a record are not recorded.
+    void beginElement(const std::string& name, const std::string& type);
+    void endElement(const std::string& defaultShaft);
+    const std::vector<ElementRecord>& elementRecords() const { return m_records; }
+    /// The record of element `name`; nullptr if it built nothing recorded.
+    const ElementRecord* findRecord(const std::string& name) const;
+
     /// Values elements derive from their parameters (see DerivedValue).
     void addDerivedValue(DerivedValue v) { m_derived.push_back(std::move(v)); }
     const std::vector<DerivedValue>& derivedValues() const { return m_derived; }
@@ -289,6 +376,13 @@ private:
     };
     std::map<std::string, ForceEntry> m_forceIndex;
     std::vector<SwitchEvent> m_switchEvents;
+    std::vector<Drive> m_drives;
+    std::vector<StartHold> m_startHolds;
+    std::vector<RegularisationSpeed> m_regularisationSpeeds;
+    std::vector<ElementRecord> m_records;
+    /// The list sizes when the open record began (Scene.cpp's recordSince).
+    struct RecordMarks;
+    std::shared_ptr<RecordMarks> m_open;
     std::map<std::string, double> m_speedHints;
     struct SpeedRelation { std::string from, to; double ratio; };
     std::vector<SpeedRelation> m_speedRelations;

@@ -153,6 +153,11 @@ def test_info_is_what_the_cli_shows():
     assert "outputs: " + " ".join("%s[%s]" % o for o in info["outputs"]) in r.stdout
     assert [b["name"] for b in info["body_list"]] == ["motor_shaft", "millstone"]
     assert info["warnings"] == [] and info["notes"] == []
+    # What each element registered, as the CLI lists it: the motor's torque probe on its shaft.
+    motor_type, motor_items = info["contributions"]["motor"]
+    assert motor_type == "InductionMotor"
+    assert ("probe", "motor.torque", "motor_shaft", "[N*m], drive torque") in motor_items
+    assert "      probe motor.torque [N*m], drive torque, on motor_shaft\n" in r.stdout
     # A reader note, as the CLI prints it: switching the analysis drops the keys it does not take.
     switched = milldyn.Model(IDLE, set={"scenario.analysis": "linearize"}).info()
     assert switched["notes"] and "note: " + switched["notes"][0] in cli("info", IDLE, "--set", "scenario.analysis=linearize").stdout
