@@ -515,12 +515,11 @@ void Simulation::initialize(const SimTK::State& start, bool allowReplay) {
     m_integrator->setReturnEveryInternalStep(true);
     m_integrator->initialize(state);
     m_integrator->resetAllStatistics();
-    // Samples are the Simulation's own interpolation between step ends, in
-    // one State it keeps, not Simbody's report-time interpolation (which
-    // copies a whole State per sample: 72 % of a burr start's instructions
-    // at 2 ms sampling; and whose report times move CPodes' steps: run()).
-    // Without constraints or prescribed q, u (sampleByHermite) a sample is
-    // the step's interpolant as it is; otherwise it is projected.
+    // Without constraints or prescribed q, u a sample is the step's
+    // interpolant and needs no projection: the Simulation interpolates into
+    // one State it keeps (sampleByHermite) instead of Simbody's report-time
+    // interpolation, which copies a whole State per sample (72 % of a burr
+    // start's instructions at 2 ms sampling).
     const SimTK::State& s = m_integrator->getState();
     m_sampleByHermite = s.getNQErr() == 0 && s.getNUErr() == 0 && s.getNUDotErr() == 0 &&
                         static_cast<int>(m_scene.matter().getFreeQIndex(s).size()) == s.getNQ() &&
@@ -752,18 +751,10 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
     auto watched = [watch](const SimTK::State& st) { return watch->value(st) - watch->threshold; };
     double lastWatch = watch ? watched(lastStepEnd) : 0;
 
-    // Own sampling: the integrator is asked for the next hard stop (a
-    // switching or the end), never for a sample, and returns at its step
-    // ends; the samples inside a step are interpolated from the last step
-    // end (time, y, ẏ) and this one into m_sample, then (with constraints or
-    // prescribed motion, !m_sampleByHermite) prescribed and projected onto
-    // the constraints, as Simbody's own report-time interpolation does. A
-    // report time handed to the integrator moved the solution: CPodes takes
-    // it as the `tout` its first step after each (re)start is sized from
-    // (the planetary start with its GearMesh constraints: 459 steps at 5 ms
-    // sampling, 454 at 0.5 ms, motor.power apart by 5e-3 W at common
-    // times; issue 26 item 6).
-    const double projectionAccuracy = integ.getConstraintToleranceInUse();
+    // Own sampling (m_sampleByHermite): the integrator returns at its step
+    // ends only; the samples inside a step are interpolated from the last
+    // step end (time, y, ẏ) and this one into m_sample.
+    const bool own = m_sampleByHermite;
     // The next sample's time: a multiple of the interval, or the end.
     auto nextSampleTime = [&] { return std::min(t0 + sampleIndex * sampleInterval, endTime); };
     double tPrev = t0;
@@ -775,8 +766,10 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         yPrev = e.getY();
         ydotPrev = e.getYDot();
     };
-    m_sample = integ.getState();  // one copy per run; its discrete part is refreshed per step
-    rememberStepEnd();
+    if (own) {
+        m_sample = integ.getState();  // one copy per run; its discrete part is refreshed per step
+        rememberStepEnd();
+    }
     // Emits the samples strictly before `until` that fall in the step just taken.
     auto emitInterpolated = [&](double until) {
         const SimTK::State& end = integ.getState();
@@ -790,7 +783,6 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             }
             interpolateHermite(tPrev, yPrev, ydotPrev, end.getTime(), end.getY(), end.getYDot(), ts, m_sample.updY());
             m_sample.setTime(ts);
-            if (!m_sampleByHermite) system.project(m_sample, projectionAccuracy);
             emit(m_sample);
             ++sampleIndex;
         }
@@ -806,7 +798,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         const double hardStop = nextSwitch < switchTimes.size() ? switchTimes[nextSwitch] : endTime;
         SimTK::Integrator::SuccessfulStepStatus status;
         try {
-            status = integ.stepTo(hardStop, hardStop);
+            status = integ.stepTo(own ? hardStop : std::min(nextSampleTime(), hardStop), hardStop);
         } catch (const std::exception& e) {
             SimTK::State last = integ.getState();
             bool finite = true;
@@ -820,7 +812,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         const SimTK::State& s = integ.getState();
         tReturned = s.getTime();
         yReturned = s.getY();
-        system.realize(s, SimTK::Stage::Acceleration);
+        system.realize(s, own ? SimTK::Stage::Acceleration : SimTK::Stage::Velocity);
 
         if (watch && s.getTime() >= watch->notBefore) {
             const double value = watched(s);
@@ -828,7 +820,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
                 system.realize(lastStepEnd, SimTK::Stage::Velocity);  // the watch's stage, after rememberWatchStart
                 m_crossingSample = locateCrossing(lastStepEnd, s.getTime(), *watch);
                 const SimTK::State& crossing = m_crossingSample;
-                emitInterpolated(crossing.getTime());
+                if (own) emitInterpolated(crossing.getTime());
                 emit(crossing);
                 step(crossing, false);
                 m_lastSampleIsCrossing = true;
@@ -839,7 +831,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
             }
             if (!integ.isStateInterpolated()) lastWatch = value;
         }
-        emitInterpolated(s.getTime());
+        if (own) emitInterpolated(s.getTime());
         const double nextSample = nextSampleTime();
         if (!integ.isStateInterpolated() && ++accepted % kStepCheckInterval == 0)
             checkStepRate(m_scene, m_settings.name, s, t0, accepted, endTime);
@@ -884,7 +876,7 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
                 lastWatch = watched(lastStepEnd);
             }
         }
-        rememberStepEnd();
+        if (own) rememberStepEnd();
         if (status == SimTK::Integrator::EndOfSimulation) return std::nullopt;
     }
 }
