@@ -127,10 +127,13 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
         throw sc.error("load", "'" + sc.text("load") + "' is not an element of this model with a periodic forcing "
                                                        "(a load that declares its harmonics)");
     const bool timeClock = load->forcingClock() == HarmonicForcing::Clock::Time;
-    if (timeClock && !sc.has("load_events_per_revolution"))
+    // Given means > 0 (the key's default 0 is "none"; a scenario built in
+    // code sets the number without marking it given).
+    const bool eventsGiven = sc.number("load_events_per_revolution") > 0;
+    if (timeClock && !eventsGiven)
         throw sc.error("load", "'" + sc.text("load") + "' is a function of time: give load_events_per_revolution "
                                                        "(z, its fundamental P_1 = z·Ω)");
-    if (!timeClock && sc.has("load_events_per_revolution"))
+    if (!timeClock && eventsGiven)
         throw sc.error("load_events_per_revolution",
                        "not used: the harmonics of '" + sc.text("load") +
                            "' follow its shafts' angles, at the orders it declares (cycles per revolution)");
