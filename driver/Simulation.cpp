@@ -835,12 +835,25 @@ std::optional<double> Simulation::run(double endTime, double sampleInterval, con
         const double nextSample = nextSampleTime();
         if (!integ.isStateInterpolated() && ++accepted % kStepCheckInterval == 0)
             checkStepRate(m_scene, m_settings.name, s, t0, accepted, endTime);
+        // A located event: an element's event witness changed sign (a frozen
+        // charge's release). The state just before the change (the kept
+        // values change at the step end at or after the event) is on the
+        // trajectory: Simbody's Runge-Kutta family returns it interpolated,
+        // at the start of the event's localization window.
+        const bool event = status == SimTK::Integrator::ReachedEventTrigger && s.getTime() <= hardStop;
         if (!integ.isStateInterpolated()) {
-            makeLaggedValuesConsistent();  // may restart: s then is the consistent state
+            if (event) step(s, false);  // before the change; the state after it starts a new piece
+            const bool changed = makeLaggedValuesConsistent();  // may restart: s then is the consistent state
             if (watch && mayWatchNext(integ.getState())) rememberWatchStart(integ.getState());
             // A step end past a hard stop (CPodes steps past and interpolates
             // back) is not on the trajectory: the switch applies before it.
-            if (s.getTime() <= hardStop) step(s, false);
+            if (event) {
+                if (changed) step(integ.getState(), true);
+            } else if (s.getTime() <= hardStop) {
+                step(s, false);
+            }
+        } else if (event) {
+            step(s, false);
         } else if (std::abs(s.getTime() - hardStop) <= 1e-12 * std::max(1.0, std::abs(hardStop))) {
             // CPodes stepped past the stop and interpolated back to it: the
             // stop is on the trajectory (the integrator's own interpolant,

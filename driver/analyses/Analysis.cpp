@@ -140,11 +140,13 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
     ElementSchema response;
     response.type = "frequency_response";
     response.doc = "Steady-state amplitude and phase of every coupling torque under one harmonic of a "
-                   "PeriodicLoad, from the linear model, over a frequency range; optionally checked by "
-                   "time simulation at chosen frequencies.";
+                   "periodic load (PeriodicLoad, AngleLoad: any load that declares its harmonics), from the "
+                   "linear model, over a frequency range; optionally checked by time simulation at chosen "
+                   "frequencies (a time-based load only).";
     response.params = {
-        P::text("load", "name of the PeriodicLoad element whose row pattern is the forcing"),
-        P::quantity("harmonic", "1", "harmonic k of the load (its row phases are k·φ_r)").optional(1.0).above(0)
+        P::text("load", "name of the periodic load whose pattern over its rows or shafts is the forcing"),
+        P::quantity("harmonic", "1", "harmonic k of the load (row phases k·φ_r; an AngleLoad's cycle harmonic k)")
+            .optional(1.0).above(0)
             .atMost(1000),
         P::quantity("frequency_min", "rad/s", "lowest forcing frequency").above(0),
         P::quantity("frequency_max", "rad/s", "highest forcing frequency").above(0),
@@ -193,13 +195,15 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
     map.doc = "Dynamic factor of every coupling torque against rotor speed, the load harmonics following "
               "the speed; bands above a threshold are reported as speeds to avoid.";
     map.params = {
-        P::text("load", "name of the PeriodicLoad element (none: gear-mesh frequencies only)")
+        P::text("load", "name of the periodic load (PeriodicLoad, AngleLoad; none: gear-mesh frequencies only)")
             .optional(std::string("")),
         P::text("rotor", "body whose speed is swept when there is no load").optional(std::string("")),
         P::quantity("speed_min", "rad/s", "lowest rotor speed").above(0),
         P::quantity("speed_max", "rad/s", "highest rotor speed").above(0),
         P::quantity("points", "1", "speeds, evenly spaced").optional(600.0).atLeast(2).atMost(100000),
-        P::quantity("load_events_per_revolution", "1", "z: P_1 = z·Ω (teeth per sprocket row)").optional(0.0)
+        P::quantity("load_events_per_revolution", "1",
+                    "z: P_1 = z·Ω (teeth per sprocket row); a time-based load only (an AngleLoad's orders are "
+                    "its own)").optional(0.0)
             .above(0),
         P::quantity("threshold", "1", "dynamic factor above which a speed band is to be avoided")
             .optional(1.3).above(0),
@@ -211,12 +215,10 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
     };
     map.crossCheck = [](const ElementSpec& e) {
         if (e.number("speed_max") <= e.number("speed_min")) throw e.error("speed_max", "must exceed speed_min");
-        if (e.has("load") && !e.has("load_events_per_revolution"))
-            throw e.error("load", "a load needs load_events_per_revolution");
         if (!e.has("load") && e.has("load_events_per_revolution"))
             throw e.error("load_events_per_revolution", "not used without a load");
         if (!e.has("load") && !e.has("rotor"))
-            throw e.error("load", "give a PeriodicLoad (load) or, for gear-mesh frequencies only, the rotor body (rotor)");
+            throw e.error("load", "give a periodic load (load) or, for gear-mesh frequencies only, the rotor body (rotor)");
         if (e.has("load") && e.has("rotor")) throw e.error("rotor", "not used with a load (the load's body is the rotor)");
     };
     schemas["resonance_map"] = map;

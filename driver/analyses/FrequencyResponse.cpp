@@ -1,6 +1,7 @@
 // frequency_response: steady-state amplitude and phase of every coupling
-// torque under one harmonic of a PeriodicLoad, from the linear model, and
-// checked by time simulation at chosen frequencies.
+// torque under one harmonic of a load's periodic forcing (HarmonicForcing),
+// from the linear model, and checked by time simulation at chosen
+// frequencies (where the load can be forced at a chosen frequency).
 //
 // Amplitude A and phase ψ per unit row amplitude, and the dynamic factor,
 // are defined in LoadResponse.h.
@@ -9,7 +10,6 @@
 #include "driver/analyses/Analysis.h"
 #include "driver/analyses/LinearModel.h"
 #include "driver/analyses/LoadResponse.h"
-#include "plugins/loads/PeriodicLoad.h"
 
 #include <cmath>
 #include <complex>
@@ -21,10 +21,12 @@ namespace {
 
 using Complex = std::complex<double>;
 
-const PeriodicLoad& findPeriodicLoad(const Scene& scene, const ModelSpec& spec) {
+const HarmonicForcing& findForcingLoad(const Scene& scene, const ModelSpec& spec) {
     const std::string name = spec.scenario.text("load");
-    const PeriodicLoad* load = scene.findElement<PeriodicLoad>(name);
-    if (!load) throw spec.scenario.error("load", "'" + name + "' is not a PeriodicLoad element of this model");
+    const HarmonicForcing* load = scene.findElement<HarmonicForcing>(name);
+    if (!load)
+        throw spec.scenario.error("load", "'" + name + "' is not an element of this model with a periodic forcing "
+                                          "(a load that declares its harmonics)");
     return *load;
 }
 
@@ -49,13 +51,14 @@ Fit fitHarmonic(const std::vector<double>& t, const std::vector<double>& y, doub
 
 double wrapPhase(double a) { return std::remainder(a, 2 * M_PI); }
 
-/// Why an output has no response of its own: the row pattern cancels there.
-std::string cancelNote(const std::string& load, int k, double ratio) {
+/// Why an output has no response of its own: the pattern of the load's
+/// terms (`terms`: "rows", "shafts") cancels there.
+std::string cancelNote(const std::string& load, const std::string& terms, int k, double ratio) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1e", ratio);
-    return "harmonic " + std::to_string(k) + " of the rows of " + load +
+    return "harmonic " + std::to_string(k) + " of the " + terms + " of " + load +
            " cancels at this coupling (amplitude " + (ratio > 0 ? std::string(text) : std::string("0")) +
-           " of the rows' in-phase amplitude: round-off)";
+           " of the " + terms + "' in-phase amplitude: round-off)";
 }
 
 }  // namespace
@@ -69,11 +72,18 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     // The dq machines' fluxes as scenario.motor_model says (default their states).
     const LinearModel lm =
         linearizeScene(*scene, steady, true, true, motorModelFromName(sc.text("motor_model")));
-    const PeriodicLoad& load = findPeriodicLoad(*scene, spec);
+    const HarmonicForcing& load = findForcingLoad(*scene, spec);
     const int k = static_cast<int>(sc.number("harmonic"));
-    const LoadResponse response(*scene, lm, load);
+    const LoadResponse response(*scene, lm, load, steady);
     const std::vector<int>& outputs = response.couplingOutputs();
     if (outputs.empty()) throw sc.error("load", "the model has no coupling whose torque could respond");
+    // One harmonic of a shaft-angle load is one frequency only if its shafts
+    // turn at one speed (resonance_map takes each at its own).
+    if (response.groupSpeedRatios().size() > 1)
+        throw sc.error("load", "the " + load.forcingTermName() + " of '" + sc.text("load") +
+                                   "' turn at different steady speeds, so its harmonic " + std::to_string(k) +
+                                   " is not one frequency; use resonance_map, which forces each at its own");
+    const std::string terms = load.forcingTermName();
     auto linearOutput = [&](double P, int probe) { return response.output(P, k, probe); };
 
     AnalysisResult result;
@@ -132,7 +142,7 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
                                       "largest amplitude of harmonic " + std::to_string(k) +
                                           "'s row pattern over the in-phase rows' amplitude: round-off, the "
                                           "forcing cancels"});
-            result.notes.push_back(name + ": no peak: " + cancelNote(sc.text("load"), k, worstRatio[o]));
+            result.notes.push_back(name + ": no peak: " + cancelNote(sc.text("load"), terms, k, worstRatio[o]));
             continue;
         }
         result.results.push_back({name + ".peak_dynamic_factor", peak[o] / response.staticReference(outputs[o]), "1",
@@ -146,6 +156,19 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     // Time-simulation checks: the same model with only harmonic k of the
     // load, at frequency P, run until transients decay, then fitted.
     const auto& checks = sc.numbers("check_frequencies");
+    if (!checks.empty()) {
+        // The check forces the load at a chosen frequency: only a load that
+        // can be so forced (a time clock) is checked.
+        ElementSpec probe;
+        for (const auto& el : spec.elements)
+            if (el.name == sc.text("load")) probe = el;
+        if (!load.setTimeCheckForcing(probe, k, checks.front()))
+            throw sc.error("check_frequencies",
+                           "'" + sc.text("load") + "' is forced by its shafts' angles: its harmonic " +
+                               std::to_string(k) + " is at the shaft speed times its order, so no run at a chosen "
+                               "frequency can check it; remove check_frequencies (a transient at the speed "
+                               "checks the response)");
+    }
     // The length of each check comes from the damping: the slowest mode
     // must decay by e^-14 before the fit. A mode that does not decay (or so
     // slowly that settling takes more than kMaxSettlePeriods periods) is
@@ -225,10 +248,7 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
         for (auto& el : checkSpec.elements)
             if (el.name == sc.text("load")) e = &el;
         const double b = 1.0;  // linear response: any amplitude; 1 N*m keeps the fit simple
-        std::vector<double> amplitudes(k, 0.0);
-        amplitudes[k - 1] = b;
-        e->params["amplitudes"].numbers = amplitudes;
-        e->params["fundamental_frequency"].number = P / k;
+        load.setTimeCheckForcing(*e, k, P);
         auto checkScene = buildScene(checkSpec);
         const SimTK::State start = solveSteadyState(*checkScene, initialState(*checkScene, checkSpec));
         const double settle = sc.number("settle_time") > 0 ? sc.number("settle_time")
@@ -279,7 +299,7 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
                 char text[64];
                 std::snprintf(text, sizeof text, "%.6g rad/s: %.1e", P, diff);
                 result.notes.push_back("time check at " + std::string(text) + " of the in-phase amplitude at " +
-                                       scene->probes()[outputs[o]].name + ": " + cancelNote(sc.text("load"), k, ratio) +
+                                       scene->probes()[outputs[o]].name + ": " + cancelNote(sc.text("load"), terms, k, ratio) +
                                        "; a relative difference to it would measure nothing");
                 continue;
             }
@@ -308,8 +328,7 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
                                   "largest |simulated − linear| over the in-phase amplitude, over the checks where "
                                   "the row pattern cancels at the coupling"});
     result.notes.push_back("harmonic " + std::to_string(k) + " of " + sc.text("load") + ", " +
-                           std::to_string(load.params().rows) + " rows, " +
-                           (load.params().staggered ? "staggered" : "in phase"));
+                           load.forcingDescription());
     return result;
 }
 

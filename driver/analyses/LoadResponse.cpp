@@ -1,12 +1,26 @@
 #include "driver/analyses/LoadResponse.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace milldyn {
 
-LoadResponse::LoadResponse(const Scene& scene, const LinearModel& model, const PeriodicLoad& load)
-    : m_scene(scene), m_model(model), m_load(load) {
+LoadResponse::LoadResponse(const Scene& scene, const LinearModel& model, const HarmonicForcing& load,
+                           const SimTK::State& steady)
+    : m_scene(scene), m_model(model), m_load(load), m_steady(steady), m_terms(load.forcingBodies()) {
+    // Groups of equal speed ratio to the first term's shaft (a shaft-angle
+    // clock only; a time clock's terms share one frequency).
+    const bool angle = load.forcingClock() == HarmonicForcing::Clock::ShaftAngle;
+    const double first = m_terms.empty() ? 0.0 : pinSpeed(steady, m_terms[0]);
+    for (const auto& body : m_terms) {
+        const double ratio = angle && first != 0 ? std::abs(pinSpeed(steady, body) / first) : 1.0;
+        std::size_t g = 0;
+        while (g < m_groupRatio.size() && std::abs(m_groupRatio[g] - ratio) > 1e-9 * std::max(1.0, ratio)) ++g;
+        if (g == m_groupRatio.size()) m_groupRatio.push_back(ratio);
+        m_groupOfTerm.push_back(static_cast<int>(g));
+    }
+    if (m_groupRatio.empty()) m_groupRatio.push_back(1.0);
     for (std::size_t p = 0; p < scene.probes().size(); ++p)
         if (scene.probes()[p].role == ProbeRole::CouplingTorque) m_outputs.push_back(static_cast<int>(p));
     // The quasi-static amplitude, the limit P -> 0 of |A(P)|, which is even
@@ -23,22 +37,24 @@ LoadResponse::LoadResponse(const Scene& scene, const LinearModel& model, const P
         if (!isRigidEigenvalue(model, model.eigenvalues[i])) slowest = slowest == 0 ? mag : std::min(slowest, mag);
     }
     const double Ps = 1e-3 * (slowest > 0 ? slowest : 1.0);
-    const Eigen::VectorXcd f = forcing(1, true);
+    const Eigen::VectorXcd f = forcing(1, true, -1);
     m_static.assign(scene.probes().size(), 0.0);
     for (int p : m_outputs)
         m_static[p] = std::abs((4 * std::abs(respond(Ps, f, p)) - std::abs(respond(2 * Ps, f, p))) / 3);
 }
 
-Eigen::VectorXcd LoadResponse::forcing(int k, bool inPhase) const {
+// group < 0: every term (the quasi-static reference).
+Eigen::VectorXcd LoadResponse::forcing(int k, bool inPhase, int group) const {
     const int n = static_cast<int>(m_scene.bodies().size());
     Eigen::VectorXcd f = Eigen::VectorXcd::Zero(n);
-    const auto& bodies = m_load.bodies();
-    for (int r = 0; r < m_load.params().rows; ++r) {
-        const SimTK::MobilizedBodyIndex target = bodies[m_load.bodyOfRow(r)].getMobilizedBodyIndex();
-        const double phase = inPhase ? 0.0 : k * m_load.rowPhase(r);
+    for (std::size_t t = 0; t < m_terms.size(); ++t) {
+        if (group >= 0 && m_groupOfTerm[t] != group) continue;
+        const SimTK::MobilizedBodyIndex target = m_terms[t].getMobilizedBodyIndex();
+        const ForcingPhasor w = inPhase ? ForcingPhasor{1.0, 0.0}
+                                        : m_load.forcingPhasor(k, static_cast<int>(t), m_steady);
         for (int j = 0; j < n; ++j)
             if (m_scene.bodies()[j].mobod.getMobilizedBodyIndex() == target)
-                f[j] += -std::exp(std::complex<double>(0, phase));
+                f[j] += -(w.weight * std::exp(std::complex<double>(0, w.phase)));
     }
     // Reduced constraints: the generalized force on the independent
     // coordinates v (u = N·v) is Nᵀ·f.
@@ -51,13 +67,13 @@ std::complex<double> LoadResponse::respond(double P, const Eigen::VectorXcd& f, 
     return harmonicProbeResponse(m_model, P, f, probe);
 }
 
-std::complex<double> LoadResponse::output(double P, int k, int probe) const {
-    return respond(P, forcing(k, false), probe);
+std::complex<double> LoadResponse::output(double P, int k, int probe, int group) const {
+    return respond(P, forcing(k, false, group), probe);
 }
 
-double LoadResponse::patternRatio(double P, int k, int probe) const {
-    const double pattern = std::abs(output(P, k, probe));
-    const double inPhase = std::abs(respond(P, forcing(k, true), probe));
+double LoadResponse::patternRatio(double P, int k, int probe, int group) const {
+    const double pattern = std::abs(output(P, k, probe, group));
+    const double inPhase = std::abs(respond(P, forcing(k, true, group), probe));
     if (inPhase > 0) return pattern / inPhase;
     return pattern > 0 ? std::numeric_limits<double>::infinity() : 0.0;
 }

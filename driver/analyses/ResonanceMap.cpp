@@ -1,9 +1,14 @@
 // resonance_map: the dynamic factor of every coupling torque against the
-// rotor speed, the load harmonics following the speed (P_k = k·z·Ω for z
-// load events per revolution), from the linear model about steady running.
+// rotor speed, the load harmonics following the speed, from the linear
+// model about steady running. A time-clock load's harmonic k is taken at
+// P_k = k·z·Ω (z load events per revolution, a scenario key); a
+// shaft-angle load's at its own order o_k (events per revolution of its
+// shaft) times its shaft's speed, ρ_g·Ω for the shafts of group g (speed
+// ratio ρ_g to the rotor in steady running).
 //
-// The factor at a speed superposes the harmonics at their worst phase:
-// DF(Ω) = Σ_k b_k·A_k(k·z·Ω) / (Σ_k b_k · A_static), A as in LoadResponse.h.
+// The factor at a speed superposes the harmonics (and groups) at their
+// worst phase: DF(Ω) = Σ_k B_k·Σ_g A_kg(P_kg) / (Σ_k B_k · A_static), A
+// and the groups as in LoadResponse.h.
 // Speed bands where the first coupling's DF exceeds `threshold` are
 // reported as bands to avoid.
 
@@ -119,17 +124,32 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
         orders.notes.insert(orders.notes.end(), motorNotes.begin(), motorNotes.end());
         return orders;
     }
-    const PeriodicLoad* load = scene->findElement<PeriodicLoad>(sc.text("load"));
-    if (!load) throw sc.error("load", "'" + sc.text("load") + "' is not a PeriodicLoad element of this model");
-    const LoadResponse response(*scene, lm, *load);
+    const HarmonicForcing* load = scene->findElement<HarmonicForcing>(sc.text("load"));
+    if (!load)
+        throw sc.error("load", "'" + sc.text("load") + "' is not an element of this model with a periodic forcing "
+                                                       "(a load that declares its harmonics)");
+    const bool timeClock = load->forcingClock() == HarmonicForcing::Clock::Time;
+    // Given means > 0 (the key's default 0 is "none"; a scenario built in
+    // code sets the number without marking it given).
+    const bool eventsGiven = sc.number("load_events_per_revolution") > 0;
+    if (timeClock && !eventsGiven)
+        throw sc.error("load", "'" + sc.text("load") + "' is a function of time: give load_events_per_revolution "
+                                                       "(z, its fundamental P_1 = z·Ω)");
+    if (!timeClock && eventsGiven)
+        throw sc.error("load_events_per_revolution",
+                       "not used: the harmonics of '" + sc.text("load") +
+                           "' follow its shafts' angles, at the orders it declares (cycles per revolution)");
+    const LoadResponse response(*scene, lm, *load, steady);
     const auto& outputs = response.couplingOutputs();
     if (outputs.empty()) throw sc.error("load", "the model has no coupling whose torque could respond");
-    const auto& b = load->params().amplitudes;
+    std::vector<double> b;
+    for (int k = 1; k <= load->forcingHarmonicCount(); ++k) b.push_back(load->forcingAmplitude(k));
     double bSum = 0;
     for (double v : b) bSum += v;
     if (!(bSum > 0)) throw sc.error("load", "the load has no harmonic amplitudes");
+    const std::vector<double>& groups = response.groupSpeedRatios();
 
-    const double z = sc.number("load_events_per_revolution");
+    const double z = timeClock ? sc.number("load_events_per_revolution") : 0.0;
     const double wMin = sc.number("speed_min"), wMax = sc.number("speed_max");
     const int points = static_cast<int>(sc.number("points"));
     const double threshold = sc.number("threshold");
@@ -163,16 +183,20 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
             double sum = 0;
             bool cancelled = true;
             for (std::size_t k = 0; k < b.size(); ++k) {
-                const double P = (k + 1) * z * w;
                 const int harmonic = static_cast<int>(k + 1);
-                const double a = std::abs(response.output(P, harmonic, outputs[o]));
+                double a = 0;
+                for (std::size_t g = 0; g < groups.size(); ++g) {
+                    const int group = static_cast<int>(g);
+                    const double P = timeClock ? (k + 1) * z * w : load->forcingOrder(harmonic) * groups[g] * w;
+                    a += std::abs(response.output(P, harmonic, outputs[o], group));
+                    if (b[k] > 0) {
+                        const double ratio = response.patternRatio(P, harmonic, outputs[o], group);
+                        worstRatio[o] = std::max(worstRatio[o], ratio);
+                        cancelled = cancelled && ratio <= LoadResponse::kCancelled;
+                    }
+                }
                 sum += b[k] * a;
                 if (o == 0) perHarmonic.push_back(a / response.staticReference(outputs[o]));
-                if (b[k] > 0) {
-                    const double ratio = response.patternRatio(P, harmonic, outputs[o]);
-                    worstRatio[o] = std::max(worstRatio[o], ratio);
-                    cancelled = cancelled && ratio <= LoadResponse::kCancelled;
-                }
             }
             const double df = sum / (bSum * response.staticReference(outputs[o]));
             row.push_back(df);
@@ -195,10 +219,11 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
                                       "over speeds and harmonics: round-off, the forcing cancels"});
             char ratio[32];
             std::snprintf(ratio, sizeof ratio, "%.1e", worstRatio[o]);
-            result.notes.push_back(name + ": no peak: the rows of " + sc.text("load") +
+            const std::string terms = load->forcingTermName();
+            result.notes.push_back(name + ": no peak: the " + terms + " of " + sc.text("load") +
                                    " cancel at this coupling at every speed and harmonic (amplitude at most " + ratio +
-                                   " of the rows' in-phase amplitude: round-off); its dynamic factors are zero but "
-                                   "for round-off");
+                                   " of the " + terms + "' in-phase amplitude: round-off); its dynamic factors are "
+                                   "zero but for round-off");
             continue;
         }
         result.results.push_back({name + ".peak_dynamic_factor", peak[o], "1", "largest over the speed range"});
@@ -225,8 +250,9 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     }
     result.results.push_back({"avoid_bands", double(bands), "1", "speed bands above the threshold"});
     // The load's first body is the rotor whose speed is swept.
+    const std::vector<SimTK::MobilizedBody> loadBodies = load->forcingBodies();
     for (const auto& rotor : scene->bodies())
-        if (!load->bodies().empty() && rotor.mobod.getMobilizedBodyIndex() == load->bodies()[0].getMobilizedBodyIndex())
+        if (!loadBodies.empty() && rotor.mobod.getMobilizedBodyIndex() == loadBodies[0].getMobilizedBodyIndex())
             addOrderExcitations(*scene, steady, lm, rotor, wMin, wMax, result);
     std::vector<std::size_t> cols;
     for (std::size_t o = 0; o < outputs.size(); ++o) cols.push_back(2 + o);

@@ -193,12 +193,15 @@ double SegmentCharge::getAngleReached(const State& s) const {
 
 double SegmentCharge::calcFrozenTorque(const State& s) const {
     if (isReleased(s)) return 0;
-    const double theta = calcFrozenLag(s);
-    // Beyond θ_r the block has broken loose: no moment, even inside the step
-    // whose end latches the release (the integrator's error control sees the
-    // step in the torque and shortens its step there).
-    if (theta >= m_p.releaseAngle) return 0;
-    return -calcUnbalanceMoment() * std::sin(theta);
+    // Packed until the latch: the release is a located event (the witness
+    // θ_r − θ, FrozenReleaseTrigger), so the integrator stops at θ = θ_r
+    // (to its localization window) and the latch flips there; the moment
+    // stays continuous up to that instant.
+    return -calcUnbalanceMoment() * std::sin(calcFrozenLag(s));
+}
+
+double SegmentCharge::calcReleaseWitness(const State& s) const {
+    return isReleased(s) ? -1.0 : m_p.releaseAngle - calcFrozenLag(s);
 }
 
 double SegmentCharge::calcFrozenLatch(const State& s) const {
@@ -325,6 +328,33 @@ void SegmentCharge::calcForce(const State& s, Vector_<SpatialVec>& bodyForces, V
 }
 
 namespace {
+
+/// The frozen charge's release as a Simbody event: the witness θ_r − θ
+/// falls through zero where the packed block reaches its release angle (−1
+/// once released, so it never triggers again). The integrator localizes the
+/// sign change (kReleaseWindow: Simbody's required localization window,
+/// default 0.1; the 4 m ball mill's window came out 8e-13 s wide)
+/// and returns the state at the window's start (Integrator::
+/// ReachedEventTrigger): Simulation::run puts it on the trajectory, and the
+/// next step end, past θ_r, flips the latch (the kept value
+/// SegmentCharge::updateFrozenLatch). A TimeStepper calls handleEvent,
+/// which flips it as well.
+class FrozenReleaseTrigger : public TriggeredEventHandler {
+public:
+    explicit FrozenReleaseTrigger(const SegmentCharge* charge) : TriggeredEventHandler(Stage::Position), m_charge(charge) {
+        getTriggerInfo().setTriggerOnRisingSignTransition(false);
+        getTriggerInfo().setRequiredLocalizationTimeWindow(kReleaseWindow);
+    }
+    Real getValue(const State& s) const override { return m_charge->calcReleaseWitness(s); }
+    void handleEvent(State& s, Real, bool& shouldTerminate) const override {
+        m_charge->updateFrozenLatch(s);
+        shouldTerminate = false;
+    }
+    static constexpr double kReleaseWindow = 1e-6;
+
+private:
+    const SegmentCharge* m_charge;
+};
 
 /// The keys each motion uses besides the segment's (drum, drum_radius,
 /// length, bulk_density, fill, half_angle, motion, lag_from).
@@ -614,6 +644,7 @@ void buildSegmentCharge(const ElementSpec& spec, Scene& scene) {
                         [impl](const State& s) { return impl->getAngleReached(s); },
                         "largest lag of the packed block (step ends; release angle once released)"});
         scene.addInitializer([impl](State& s) { impl->setFrozenStart(s); });
+        scene.system().addEventHandler(new FrozenReleaseTrigger(impl));
         scene.addLaggedValue({spec.name + ".release", true,
                               [impl](const State& s) { return impl->calcFrozenLatch(s); },
                               [impl](State& s, double) { return impl->updateFrozenLatch(s); }});

@@ -122,8 +122,9 @@ struct SegmentChargeParams {
  *   shell's axis; the block turns with the shell, its lag θ = θ_0 + the
  *   shell's turn since t = 0:
  * <pre>
- *   M = −m |g| r_c sin θ  while packed and θ < θ_r,  0 once released
- *   released: latched at the first step end with θ ≥ θ_r
+ *   M = −m |g| r_c sin θ  while packed,  0 once released
+ *   released: a located event, the witness θ_r − θ falling through zero
+ *   (Simbody's event localization: the peak is m |g| r_c sin θ_r to it)
  *   fall energy m |g| r_c (1 − cos θ_r), checked against safe_angle θ_s
  * </pre>
  *
@@ -175,9 +176,12 @@ public:
     double calcFrozenLag(const SimTK::State& s) const;
     bool isReleased(const SimTK::State& s) const;
     double getAngleReached(const SimTK::State& s) const;
-    /// Frozen: the couple on the shell [N*m]: −m |g| r_c sin θ while packed
-    /// and θ < θ_r, 0 once released (the fallen charge lies at the bottom).
+    /// Frozen: the couple on the shell [N*m]: −m |g| r_c sin θ while packed,
+    /// 0 once released (the fallen charge lies at the bottom).
     double calcFrozenTorque(const SimTK::State& s) const;
+    /// Frozen: the release's event witness θ_r − θ while packed, −1 once
+    /// released (it falls through zero at the release angle) [rad].
+    double calcReleaseWitness(const SimTK::State& s) const;
     /// Frozen: the latch (released, angle reached) from state `s` at an
     /// accepted step end; returns 1 if it changed, else 0.
     double updateFrozenLatch(SimTK::State& s) const;

@@ -1,10 +1,12 @@
 #include "plugins/loads/AngleLoad.h"
 
+#include "plugins/loads/HarmonicSeries.h"
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/Format.h"
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <stdexcept>
 #include <string>
 
@@ -78,6 +80,11 @@ AngleLoad::AngleLoad(const SimTK::GeneralForceSubsystem& forces, std::vector<Sim
         break;
     }
 
+    for (std::size_t k = 0; k < p.springSineAmplitudes.size(); ++k)
+        m_potentialCos.push_back(-p.springSineAmplitudes[k] / double(k + 1));
+    for (std::size_t k = 0; k < p.springCosineAmplitudes.size(); ++k)
+        m_potentialSin.push_back(p.springCosineAmplitudes[k] / double(k + 1));
+
     // The harmonics of g: given (fourier) or by the trapezoidal rule.
     if (p.shape == S::Fourier) {
         m_mean = p.meanTorque;
@@ -114,12 +121,8 @@ double AngleLoad::shapeValue(double psi) const {
     using S = AngleLoadParams::Shape;
     const AngleLoadParams& p = m_params;
     switch (p.shape) {
-    case S::Fourier: {
-        double g = p.meanTorque;
-        for (std::size_t k = 0; k < p.cosineAmplitudes.size(); ++k) g += p.cosineAmplitudes[k] * std::cos((k + 1) * psi);
-        for (std::size_t k = 0; k < p.sineAmplitudes.size(); ++k) g += p.sineAmplitudes[k] * std::sin((k + 1) * psi);
-        return g;
-    }
+    case S::Fourier:
+        return p.meanTorque + harmonicSeries(p.cosineAmplitudes, p.sineAmplitudes, psi);
     case S::Table: {
         const double u = wrapCycle(psi);
         const auto& a = p.tableAngles;
@@ -160,21 +163,12 @@ double AngleLoad::shapeValue(double psi) const {
 double AngleLoad::crushingMagnitude(double psi) const { return shapeValue(psi); }
 
 double AngleLoad::springTorque(double psi) const {
-    double c = 0;
-    const auto& pc = m_params.springCosineAmplitudes;
-    const auto& qs = m_params.springSineAmplitudes;
-    for (std::size_t k = 0; k < pc.size(); ++k) c += pc[k] * std::cos((k + 1) * psi);
-    for (std::size_t k = 0; k < qs.size(); ++k) c += qs[k] * std::sin((k + 1) * psi);
-    return c;
+    return harmonicSeries(m_params.springCosineAmplitudes, m_params.springSineAmplitudes, psi);
 }
 
 double AngleLoad::springPotential(double psi) const {
-    double v = 0;
-    const auto& pc = m_params.springCosineAmplitudes;
-    const auto& qs = m_params.springSineAmplitudes;
-    for (std::size_t k = 0; k < pc.size(); ++k) v += pc[k] * std::sin((k + 1) * psi) / double(k + 1);
-    for (std::size_t k = 0; k < qs.size(); ++k) v -= qs[k] * std::cos((k + 1) * psi) / double(k + 1);
-    return v / m_params.cyclesPerRevolution;
+    // V = (1/n)·Σ_k (p_k sin kψ − q_k cos kψ)/k: the series of −q_k/k and p_k/k.
+    return harmonicSeries(m_potentialCos, m_potentialSin, psi) / m_params.cyclesPerRevolution;
 }
 
 double AngleLoad::bodyPhase(int body) const { return m_params.phases.empty() ? 0.0 : m_params.phases[body]; }
@@ -197,6 +191,37 @@ double AngleLoad::runningHarmonicAmplitude(int k) const {
     const double p = k <= static_cast<int>(pc.size()) ? pc[k - 1] : 0.0;
     const double q = k <= static_cast<int>(qs.size()) ? qs[k - 1] : 0.0;
     return std::hypot(cosineCoefficient(k) + p, sineCoefficient(k) + q);
+}
+
+int AngleLoad::forcingHarmonicCount() const {
+    const AngleLoadParams& p = m_params;
+    std::size_t K = static_cast<std::size_t>(p.listedHarmonics);
+    if (p.shape == AngleLoadParams::Shape::Fourier) K = std::max(K, m_cos.size());
+    K = std::max({K, p.springCosineAmplitudes.size(), p.springSineAmplitudes.size()});
+    return static_cast<int>(K);
+}
+
+ForcingPhasor AngleLoad::forcingPhasor(int k, int shaft, const SimTK::State& steady) const {
+    const double B = runningHarmonicAmplitude(k);
+    if (!(B > 0)) return {0.0, 0.0};
+    const auto& pc = m_params.springCosineAmplitudes;
+    const auto& qs = m_params.springSineAmplitudes;
+    const double p = k <= static_cast<int>(pc.size()) ? pc[k - 1] : 0.0;
+    const double q = k <= static_cast<int>(qs.size()) ? qs[k - 1] : 0.0;
+    const SimTK::MobilizedBody& body = m_bodies[shaft];
+    const double omega = body.getOneU(steady, SimTK::MobilizerUIndex(0));
+    const double theta = body.getOneQ(steady, SimTK::MobilizerQIndex(0));
+    const double sign = std::tanh(omega / m_params.smoothingSpeed);
+    const double X = sign * cosineCoefficient(k) + p, Y = sign * sineCoefficient(k) + q;
+    std::complex<double> C = std::complex<double>(Y, X) * std::polar(1.0, k * cycleAngle(shaft, theta));
+    if (omega < 0) C = -std::conj(C);  // the angle runs backwards: the harmonic at +k·n·|ω|
+    return {std::abs(C) / B, std::arg(C)};
+}
+
+std::string AngleLoad::forcingDescription() const {
+    const std::size_t n = m_bodies.size();
+    return std::to_string(n) + (n == 1 ? " shaft, " : " shafts, ") + std::to_string(m_params.cyclesPerRevolution) +
+           " cycle(s) per revolution";
 }
 
 bool AngleLoad::isExcitationOn(const SimTK::State& s) const {

@@ -3,6 +3,7 @@
 // crushing stroke, a piston machine's cylinders): its torque repeats every
 // 1/n of a revolution of the shaft, whatever the speed.
 
+#include "plugins/scene/HarmonicForcing.h"
 #include "plugins/scene/Schedule.h"
 
 #include <Simbody.h>
@@ -82,8 +83,20 @@ struct AngleLoadParams {
  * trigonometric polynomial of lower degree; for a kinked shape the error is
  * O(h²) ≈ 1e-8 of the peak). With excitation off (steady-state solver,
  * linearization) only the mean a0·tanh(ω/ωs) acts and c is off.
+ *
+ * As a HarmonicForcing (frequency_response, resonance_map): a shaft-angle
+ * clock, harmonic k of the cycle at k·n events per revolution; one term per
+ * shaft; B_k = runningHarmonicAmplitude(k); K = listed_harmonics (at least
+ * the Fourier coefficients given). In steady running, θ_j = θ_j0 + ω_j·τ:
+ *
+ * <pre>
+ *   X = s_j·a_k + p_k,  Y = s_j·b_k + q_k,  s_j = tanh(ω_j/ωs)
+ *   harmonic k of M_j = X cos kψ_j + Y sin kψ_j = Im(C_j·e^{i·k·n·ω_j·τ}),
+ *   C_j = (Y + iX)·e^{ik(n·θ_j0 − φ_j)};  ω_j < 0: Im(−conj(C_j)·e^{i·k·n·|ω_j|·τ})
+ *   weight |C_j|/B_k, phase arg C_j (of −conj C_j when ω_j < 0)
+ * </pre>
  */
-class AngleLoad : public SimTK::Force::Custom::Implementation {
+class AngleLoad : public SimTK::Force::Custom::Implementation, public HarmonicForcing {
 public:
     /// Throws std::invalid_argument naming the parameter that is out of range.
     AngleLoad(const SimTK::GeneralForceSubsystem& forces, std::vector<SimTK::MobilizedBody> bodies,
@@ -128,6 +141,16 @@ public:
     SimTK::Real calcPotentialEnergy(const SimTK::State& state) const override;
     void realizeTopology(SimTK::State& state) const override;
 
+    // HarmonicForcing
+    Clock forcingClock() const override { return Clock::ShaftAngle; }
+    std::vector<SimTK::MobilizedBody> forcingBodies() const override { return m_bodies; }
+    int forcingHarmonicCount() const override;
+    double forcingAmplitude(int k) const override { return runningHarmonicAmplitude(k); }
+    double forcingOrder(int k) const override { return double(k) * m_params.cyclesPerRevolution; }
+    ForcingPhasor forcingPhasor(int k, int shaft, const SimTK::State& steady) const override;
+    std::string forcingTermName() const override { return "shafts"; }
+    std::string forcingDescription() const override;
+
 private:
     void calcValues(const SimTK::State& state, Values& out) const;
     double shapeValue(double psi) const;
@@ -137,6 +160,7 @@ private:
     AngleLoadParams m_params;
     double m_mean = 0;
     std::vector<double> m_cos, m_sin;  // a_k, b_k, k = 1..K
+    std::vector<double> m_potentialCos, m_potentialSin;  // −q_k/k, p_k/k: the spring's potential series
     mutable SimTK::DiscreteVariableIndex m_excitationIndex;
     mutable SimTK::CacheEntryIndex m_valuesIndex;
 };

@@ -1,5 +1,6 @@
 #include "plugins/loads/PeriodicLoad.h"
 
+#include "plugins/loads/HarmonicSeries.h"
 #include "plugins/scene/ElementRegistry.h"
 
 #include <cmath>
@@ -44,21 +45,8 @@ double PeriodicLoad::rowPhase(int row) const {
 }
 
 double PeriodicLoad::calcSineSeries(double theta) const {
-    const std::vector<double>& b = m_params.amplitudes;
-    if (b.empty()) return 0;
-    const double s1 = std::sin(theta);
-    double sum = b[0] * s1;
-    if (b.size() == 1) return sum;
-    // Angle addition: (sin, cos) of (k+1)θ from those of kθ and θ.
-    const double c1 = std::cos(theta);
-    double sk = s1, ck = c1;
-    for (std::size_t k = 1; k < b.size(); ++k) {
-        const double next = sk * c1 + ck * s1;
-        ck = ck * c1 - sk * s1;
-        sk = next;
-        sum += b[k] * sk;
-    }
-    return sum;
+    static const std::vector<double> kNoCosines;
+    return harmonicSeries(kNoCosines, m_params.amplitudes, theta);
 }
 
 double PeriodicLoad::periodicPart(int row, double t) const {
@@ -134,6 +122,29 @@ void PeriodicLoad::realizeTopology(SimTK::State& s) const {
     switches.push_back(SimTK::DiscreteVarKey(subsystem, m_excitationIndex));
     m_valuesIndex = s.allocateCacheEntryWithPrerequisites(subsystem, SimTK::Stage::Velocity, SimTK::Stage::Infinity,
                                                           false, false, false, switches, {}, new SimTK::Value<Values>());
+}
+
+std::vector<SimTK::MobilizedBody> PeriodicLoad::forcingBodies() const {
+    std::vector<SimTK::MobilizedBody> rows;
+    for (int r = 0; r < m_params.rows; ++r) rows.push_back(m_bodies[bodyOfRow(r)]);
+    return rows;
+}
+
+double PeriodicLoad::forcingAmplitude(int k) const {
+    return k >= 1 && k <= forcingHarmonicCount() ? m_params.amplitudes[k - 1] : 0.0;
+}
+
+std::string PeriodicLoad::forcingDescription() const {
+    return std::to_string(m_params.rows) + " rows, " + (m_params.staggered ? "staggered" : "in phase");
+}
+
+bool PeriodicLoad::setTimeCheckForcing(ElementSpec& spec, int k, double P) const {
+    // Harmonic k alone, b_k = 1 N*m, at P_1 = P/k.
+    std::vector<double> amplitudes(k, 0.0);
+    amplitudes[k - 1] = 1.0;
+    spec.params["amplitudes"].numbers = amplitudes;
+    spec.params["fundamental_frequency"].number = P / k;
+    return true;
 }
 
 namespace {

@@ -2,6 +2,7 @@
 // PeriodicLoad: the crushing torque of sprocket rows, a mean plus a Fourier
 // series in time, with a phase per row.
 
+#include "plugins/scene/HarmonicForcing.h"
 #include "plugins/scene/Schedule.h"
 
 #include <Simbody.h>
@@ -61,7 +62,8 @@ struct PeriodicLoadParams {
  * calcForce, the probes and the energy meter's power flow all read
  * (getValues). Rows of equal phase share one Fourier sum and rows on one
  * body one tanh. The harmonics come from one sine and cosine per distinct
- * phase by the angle-addition recurrence
+ * phase by the angle-addition recurrence (harmonicSeries, HarmonicSeries.h, shared
+ * with AngleLoad)
  *
  * <pre>
  *   sin((k+1)θ) = sin kθ·cos θ + cos kθ·sin θ,   cos((k+1)θ) = cos kθ·cos θ − sin kθ·sin θ
@@ -69,8 +71,11 @@ struct PeriodicLoadParams {
  *
  * whose rounding grows like k·ε (PeriodicLoadTest checks it against the
  * direct sum in long double: ≤ 1e-13 of Σ|b_k| up to 50 harmonics).
+ *
+ * As a HarmonicForcing (frequency_response, resonance_map): a time clock,
+ * P_k = k·P_1; one term per row, weight 1 and phase k·φ_r; B_k = b_k.
  */
-class PeriodicLoad : public SimTK::Force::Custom::Implementation {
+class PeriodicLoad : public SimTK::Force::Custom::Implementation, public HarmonicForcing {
 public:
     /// `bodies` holds n bodies or one; throws std::invalid_argument naming
     /// the parameter that is out of range.
@@ -115,6 +120,16 @@ public:
                    SimTK::Vector_<SimTK::Vec3>& particleForces, SimTK::Vector& mobilityForces) const override;
     SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
     void realizeTopology(SimTK::State& state) const override;
+
+    // HarmonicForcing
+    Clock forcingClock() const override { return Clock::Time; }
+    std::vector<SimTK::MobilizedBody> forcingBodies() const override;
+    int forcingHarmonicCount() const override { return static_cast<int>(m_params.amplitudes.size()); }
+    double forcingAmplitude(int k) const override;
+    double forcingOrder(int k) const override { return k * m_params.fundamentalFrequency; }
+    ForcingPhasor forcingPhasor(int k, int row, const SimTK::State&) const override { return {1.0, k * rowPhase(row)}; }
+    std::string forcingDescription() const override;
+    bool setTimeCheckForcing(ElementSpec& spec, int k, double P) const override;
 
 private:
     /// Σ_k b_k·sin(k·θ) by the angle-addition recurrence [N*m].

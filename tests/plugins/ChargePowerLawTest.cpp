@@ -224,6 +224,33 @@ TEST(FrozenCharge, LiftsReleasesAndJudgesTheSafeAngle) {
     EXPECT_TRUE(unsafe);
 }
 
+// The release is a located event (the witness θ_r − θ, Simbody's event
+// localization): the integrator stops where the block reaches θ_r, so the
+// largest moment of the run, taken from every integration step, is
+// m g r_c sin θ_r to the localization (the shell turns at 0.443 rad/s; the
+// window is a fraction of a microsecond). Before, the latch was applied at
+// the first step end past θ_r, and the moment inside that step was cut at
+// θ_r: the peak was the last step end's below it, as far below as the
+// integrator's step was long.
+TEST(FrozenCharge, ReleaseIsLocatedAtTheReleaseAngle) {
+    for (const char* release : {"30 deg", "50 deg"}) {
+        const AnalysisResult r = runAnalysis(readMap({{"motion: torque_arm", "motion: frozen"},
+                                                      {"    power_law: bond", std::string("    release_angle: ") +
+                                                                                release + "\n    safe_angle: 45 deg"},
+                                                      {"initial_speed_fraction: 0.75", "initial_speed_fraction: 0.2"},
+                                                      {"end_time: 0.1 s", "end_time: 3 s\n  zero_dof: integrate"},
+                                                      {"sample_interval: 50 ms", "sample_interval: 10 ms\n  peaks: [charge.torque]"}}));
+        const oracles::CircularSegmentCharge seg{2.0, 6.0, 4650, 0.40};
+        const double W = oracles::segmentMass(seg) * 9.81 * oracles::segmentCentroidDistance(seg);
+        const double thetaR = (release[0] == '3' ? 30 : 50) * kDeg;
+        const ResultScalar* peak = r.find("peak.charge.torque");
+        ASSERT_NE(peak, nullptr);
+        EXPECT_NEAR(peak->value / (W * std::sin(thetaR)), 1.0, 1e-9) << release;
+        EXPECT_EQ(r.find("charge.angle_reached")->value, thetaR) << release;
+        EXPECT_EQ(r.find("charge.released")->value, 1.0) << release;
+    }
+}
+
 // A replayed run (no free degree of freedom) cannot carry the latch: refused.
 TEST(FrozenCharge, ReplayIsRefused) {
     const std::string e = errorOf([&] {
