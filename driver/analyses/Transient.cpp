@@ -5,6 +5,7 @@
 #include "driver/analyses/Analysis.h"
 #include "driver/analyses/MotorReports.h"
 #include "driver/analyses/Trajectory.h"
+#include "driver/analyses/WindowStatistics.h"
 #include "plugins/loads/BreakawayResistance.h"
 #include "plugins/scene/Format.h"
 
@@ -389,6 +390,29 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             peaks[i].emplace([&probes, i](const SimTK::State& s) { return probes[i].value(s); });
     // speed_body's speed at every step end: the verdicts and start_time.
     SpeedTrace trace;
+    // Steady-operation statistics (issue 29 item 1) over whole periods of
+    // the analysis window, from the trajectory: the summary's steady values
+    // (speed_body's speed, the load torques', load powers' and drive
+    // torques' sums), then every outputs.statistics name; and the peaks of
+    // the body speeds outputs.peaks names.
+    std::string periodWhy;
+    const WindowStatistics::PeriodRule periodRule = statisticsPeriod(*scene, spec, periodWhy);
+    std::vector<WindowStatistics::Fn> statisticsOf = {
+        [&speedBody](const SimTK::State& s) { return pinSpeed(s, speedBody.mobod); },
+        [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::ResistanceTorque); },
+        [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::ResistancePower); },
+        [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::DriveTorque); }};
+    const std::size_t kSteadyQuantities = statisticsOf.size();
+    std::vector<NamedQuantity> statisticsNamed;
+    for (const std::string& name : spec.outputs.statistics)
+        if (const auto q = findQuantity(*scene, name)) {
+            statisticsNamed.push_back(*q);
+            statisticsOf.push_back(q->f);
+        }
+    WindowStatistics windowStatistics(statisticsOf, tWindowStart, tWindowEnd, periodRule);
+    std::vector<std::pair<NamedQuantity, PeakTracker>> speedPeaks;
+    for (const std::string& name : spec.outputs.peaks)
+        if (const auto q = findQuantity(*scene, name); q && !q->body.empty()) speedPeaks.emplace_back(*q, PeakTracker(q->f));
     // When each starting sequence first stood finished (a step end's time).
     const auto& sequences = scene->startSequences();
     std::vector<std::optional<double>> sequenceEnd(sequences.size());
@@ -398,6 +422,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         peakDrive.step(sim, s);
         for (auto& p : peaks)
             if (p) p->step(sim, s);
+        windowStatistics.step(sim, s);
+        for (auto& p : speedPeaks) p.second.step(sim, s);
         // A sequence's end located inside the step (bisection on the
         // trajectory: a ramp ends at its time, not at the next step end).
         for (std::size_t i = 0; i < sequences.size(); ++i)
@@ -464,25 +490,42 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     // A start that did not complete has no steady values: its numbers are
     // what the shafts did at the end of the start window.
     const std::string suffix = reached ? "" : "_at_end";
-    result.results.push_back({reached ? "steady_speed" : "speed_at_end", omega, "rad/s",
-                              "speed of " + speedBody.name + " " + at});
+    // Under a periodic load the steady values are means over whole periods
+    // of the analysis window (WindowStatistics; docs/model-format.md,
+    // "Steady-operation statistics"); the last instant's stay as final.NAME.
+    const bool periodMeans = reached && windowStatistics.valid() && windowStatistics.periods() > 0;
+    const std::string windowText =
+        !windowStatistics.valid() ? std::string()
+                                  : std::to_string(windowStatistics.periods()) + " whole " + periodRule.what + ", " +
+                                        fmt(windowStatistics.windowStart()) + " to " +
+                                        fmt(windowStatistics.windowEnd()) + " s (" + periodWhy + ")";
+    const std::string steadyAt = periodMeans ? "averaged over " + windowText : at;
+    auto steadyValue = [&](std::size_t i, double instant) {
+        return periodMeans ? windowStatistics.values(i).mean : instant;
+    };
+    const double omegaSteady = steadyValue(0, omega);
+    result.results.push_back({reached ? "steady_speed" : "speed_at_end", omegaSteady, "rad/s",
+                              "speed of " + speedBody.name + " " + steadyAt});
     const std::string loadShafts = probeShafts(spec, *scene, ProbeRole::ResistanceTorque);
     const std::string driveShafts = probeShafts(spec, *scene, ProbeRole::DriveTorque);
-    result.results.push_back({"resistance_torque" + suffix, sumProbes(*scene, steady, ProbeRole::ResistanceTorque),
-                              "N*m",
-                              "sum of load torques " + at + ", each on its own shaft (" +
+    result.results.push_back({"resistance_torque" + suffix,
+                              steadyValue(1, sumProbes(*scene, steady, ProbeRole::ResistanceTorque)), "N*m",
+                              "sum of load torques " + steadyAt + ", each on its own shaft (" +
                                   probeNames(*scene, ProbeRole::ResistanceTorque) + ")",
                               loadShafts});
-    result.results.push_back({"power" + suffix, sumProbes(*scene, steady, ProbeRole::ResistancePower), "W",
-                              "power absorbed by the loads " + at});
-    if (windowCopied)
+    result.results.push_back({"power" + suffix, steadyValue(2, sumProbes(*scene, steady, ProbeRole::ResistancePower)),
+                              "W", "power absorbed by the loads " + steadyAt});
+    if (periodMeans)
+        addMeanPower(*scene, windowStatistics.startState(), windowStatistics.endState(), windowText, result);
+    else if (windowCopied)
         addMeanPower(*scene, windowStart, steady,
                      "the last " + fmt(steady.getTime() - windowStart.getTime()) + " s " +
                          (switched ? "before switch-off" : "of the run") + " (" + fmt(windowStart.getTime()) + " to " +
                          fmt(steady.getTime()) + " s)",
                      result);
-    result.results.push_back({"drive_torque" + suffix, sumProbes(*scene, steady, ProbeRole::DriveTorque), "N*m",
-                              "sum of drive torques " + at + ", each on its own shaft (" +
+    result.results.push_back({"drive_torque" + suffix,
+                              steadyValue(3, sumProbes(*scene, steady, ProbeRole::DriveTorque)), "N*m",
+                              "sum of drive torques " + steadyAt + ", each on its own shaft (" +
                                   probeNames(*scene, ProbeRole::DriveTorque) + ")",
                               driveShafts});
     result.results.push_back({"peak_drive_torque", peakDrive.peak(), "N*m",
@@ -509,6 +552,13 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             result.results.push_back(
                 {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
         }
+    addSteadyStatistics(*scene, speedBody, windowStatistics, kSteadyQuantities, statisticsNamed, periodRule,
+                        periodWhy, windowText, reached, steady, at, result);
+    for (const auto& [q, tracker] : speedPeaks) {
+        result.results.push_back({"peak." + q.name, tracker.peak(), q.unit,
+                                  "largest |" + q.name + "| of the run (outputs.peaks; every integration step)"});
+        result.results.push_back({"final." + q.name, q.f(steady), q.unit, q.name + " " + at + " (outputs.peaks)"});
+    }
     addMotorReports(*scene, last, result);
     if (start == "rest")
         for (std::size_t i = 0; i < sequences.size(); ++i)
@@ -517,11 +567,11 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
                                           "instant at which " + sequences[i].name +
                                               "'s starting sequence had finished (starter out of circuit, clutch "
                                               "engaged and locked)"});
-    if (start == "rest" && reached && omega != 0) {
+    if (start == "rest" && reached && omegaSteady != 0) {
         // The instant the integrated speed first reaches 95 % of the steady
         // speed in its direction (interpolated to the crossing).
-        const double sign = omega > 0 ? 1.0 : -1.0;
-        if (const auto t95 = trace.firstReach(0.95 * omega, sign)) {
+        const double sign = omegaSteady > 0 ? 1.0 : -1.0;
+        if (const auto t95 = trace.firstReach(0.95 * omegaSteady, sign)) {
             result.results.push_back({"start_time", *t95, "s",
                                       "instant at which " + speedBody.name + " first reached 95 % of its steady speed "
                                       "(the end of the start; located on the integrated trajectory)"});
