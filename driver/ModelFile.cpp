@@ -929,6 +929,34 @@ private:
         if (n["energy_balance"]) out.energyBalance = readBool(n["energy_balance"], "outputs.energy_balance");
         if (n["columns"]) readNames(n["columns"], "outputs.columns", out.columns, out.columnWhere);
         if (n["peaks"]) readNames(n["peaks"], "outputs.peaks", out.peaks, out.peakWhere);
+        if (n["statistics"]) readNames(n["statistics"], "outputs.statistics", out.statistics, out.statisticsWhere);
+        if (n["statistics_period"]) readStatisticsPeriod(n["statistics_period"], out);
+    }
+
+    /// `statistics_period: auto | hold | <time> | revolutions of BODY`
+    /// (the body is checked against the scene when the transient runs).
+    void readStatisticsPeriod(const YAML::Node& n, OutputSpec& out) const {
+        const std::string key = "outputs.statistics_period";
+        const std::string text = scalar(n, key);
+        out.statisticsPeriodWhere = where(n);
+        const std::string revolutions = "revolutions of ";
+        if (text == "auto" || text == "hold") {
+            out.statisticsPeriod = text;
+        } else if (text.compare(0, revolutions.size(), revolutions) == 0) {
+            std::string body = text.substr(revolutions.size());
+            body.erase(0, body.find_first_not_of(' '));
+            body.erase(body.find_last_not_of(' ') + 1);
+            if (body.empty()) throw error(n, key, "'revolutions of' names no body");
+            out.statisticsPeriod = "revolutions";
+            out.statisticsPeriodBody = body;
+        } else {
+            if (text.find_first_of("0123456789") == std::string::npos)
+                throw error(n, key,
+                            "'" + text + "' is none of auto, hold, a time (e.g. 0.2 s) or 'revolutions of BODY'");
+            out.statisticsPeriodTime = readNumber(n, key, "s");
+            if (!(out.statisticsPeriodTime > 0)) throw error(n, key, "a period must be > 0 s");
+            out.statisticsPeriod = "time";
+        }
     }
 
     /// A list of names, or (from --set) one value with names separated by commas.
@@ -1341,7 +1369,7 @@ const ModelFileKeys& modelFileKeys() {
         {"name", "inertia", "mass", "mass_centre", "joint", "initial_angle", "initial_speed", "fidelity"},
         {"type", "parent", "location"},
         {"name", "accuracy", "max_step"},
-        {"sample_interval", "plots", "columns", "energy_balance", "peaks"},
+        {"sample_interval", "plots", "columns", "energy_balance", "peaks", "statistics", "statistics_period"},
         {"level", "levels"},
         {"why", "set"},
         {"file", "prefix", "set"},

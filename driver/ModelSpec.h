@@ -63,6 +63,21 @@ struct OutputSpec {
     /// (peak.NAME, final.NAME).
     std::vector<std::string> peaks;
     std::vector<SourceLocation> peakWhere;
+    /// `statistics:` outputs (probes or body speed columns) whose steady-
+    /// operation statistics over whole periods of the steady window the
+    /// transient summary reports (mean.NAME, min.NAME, max.NAME,
+    /// peak_to_peak.NAME, ripple.NAME, rms.NAME, speed_fluctuation.BODY;
+    /// driver/analyses/WindowStatistics.h, docs/model-format.md).
+    std::vector<std::string> statistics;
+    std::vector<SourceLocation> statisticsWhere;
+    /// `statistics_period:` how the steady window is cut to whole periods:
+    /// "auto" (from the model's periodic loads), "hold" (no cut: the hold
+    /// window), "time" (statisticsPeriodTime [s]) or "revolutions" (whole
+    /// turns of statisticsPeriodBody).
+    std::string statisticsPeriod = "auto";
+    double statisticsPeriodTime = 0;  ///< [s]
+    std::string statisticsPeriodBody;
+    SourceLocation statisticsPeriodWhere;
     /// `energy_balance:` build the energy meter for analyses that report
     /// an energy balance (its integrals are states every step carries).
     bool energyBalance = true;

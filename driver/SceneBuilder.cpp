@@ -2,6 +2,7 @@
 
 #include "driver/ReducedInertia.h"
 #include "driver/Simulation.h"
+#include "driver/analyses/Analysis.h"
 
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/EnergyMeter.h"
@@ -132,17 +133,23 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
         }
         flowTypes.resize(scene->energyFlows().size(), e.type);
     }
-    // Every peak must name one output: a typo would otherwise drop it silently.
+    // Every peak and statistic must name one output or a body's speed
+    // column: a typo would otherwise drop it silently.
     const std::vector<std::string>& peaks = spec.outputs.peaks;
-    for (std::size_t i = 0; i < peaks.size(); ++i) {
-        const bool found = std::any_of(scene->probes().begin(), scene->probes().end(),
-                                       [&](const Probe& p) { return p.name == peaks[i]; });
-        if (!found) {
-            std::vector<std::string> names;
-            for (const auto& p : scene->probes()) names.push_back(p.name);
-            throw SpecError(spec.outputs.peakWhere[i], "outputs.peaks",
-                            "no output named '" + peaks[i] + "'" + suggestion(peaks[i], names));
-        }
+    const std::vector<std::string>& statistics = spec.outputs.statistics;
+    {
+        std::vector<std::string> names;
+        for (const auto& b : scene->bodies()) names.push_back(speedColumnName(*scene, b));
+        for (const auto& p : scene->probes()) names.push_back(p.name);
+        auto check = [&](const std::vector<std::string>& list, const std::vector<SourceLocation>& at,
+                         const std::string& key) {
+            for (std::size_t i = 0; i < list.size(); ++i)
+                if (std::find(names.begin(), names.end(), list[i]) == names.end())
+                    throw SpecError(at[i], key,
+                                    "no output or body speed named '" + list[i] + "'" + suggestion(list[i], names));
+        };
+        check(peaks, spec.outputs.peakWhere, "outputs.peaks");
+        check(statistics, spec.outputs.statisticsWhere, "outputs.statistics");
     }
     if (!columns.empty()) {
         // Every column must name something: a typo would otherwise drop an
@@ -162,7 +169,8 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
         // coupling torques, speeds): those stay whatever the columns say.
         const std::size_t dropped =
             scene->retainProbes([&](const Probe& p) { return p.role != ProbeRole::Generic || named(p.name) ||
-                                           std::find(peaks.begin(), peaks.end(), p.name) != peaks.end();
+                                           std::find(peaks.begin(), peaks.end(), p.name) != peaks.end() ||
+                                           std::find(statistics.begin(), statistics.end(), p.name) != statistics.end();
                                 });
         if (dropped > 0)
             scene->omit(std::to_string(dropped) + " outputs of built elements", "not named in outputs.columns");

@@ -6,9 +6,12 @@
 #include "driver/analyses/MotorReports.h"
 #include "driver/analyses/SteadyStart.h"
 #include "driver/analyses/Trajectory.h"
+#include "driver/analyses/WindowStatistics.h"
 #include "plugins/scene/Format.h"
 
 #include <algorithm>
+#include <functional>
+#include <map>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -56,12 +59,13 @@ std::size_t distinctShafts(const ModelSpec& spec, const Scene& scene, ProbeRole 
 
 /// `key` (+ suffix): the sum of the torques of `role` when they all act on
 /// one shaft; else `key`.<probe> for each, on its own shaft, and no sum.
-void addTorqueLines(const Scene& scene, const ModelSpec& spec, const SimTK::State& state, ProbeRole role,
-                    const std::string& key, const std::string& suffix, const std::string& what,
-                    const std::string& at, AnalysisResult& result) {
+void addTorqueLines(const Scene& scene, const ModelSpec& spec, ProbeRole role, const std::string& key,
+                    const std::string& suffix, const std::string& what, const std::string& at,
+                    const std::function<double()>& sumValue, const std::function<double(std::size_t)>& probeValue,
+                    AnalysisResult& result) {
     const std::string shafts = probeShafts(spec, scene, role);
     if (distinctShafts(spec, scene, role) <= 1) {
-        result.results.push_back({key + suffix, sumProbes(scene, state, role), "N*m",
+        result.results.push_back({key + suffix, sumValue(), "N*m",
                                   what + " " + at + (shafts.empty() ? std::string() : " on " + shafts) + " (" +
                                       probeNames(scene, role) + (probesOfRole(scene, role).size() > 1 ? ", summed" : "") +
                                       ")",
@@ -71,7 +75,7 @@ void addTorqueLines(const Scene& scene, const ModelSpec& spec, const SimTK::Stat
     for (std::size_t i : probesOfRole(scene, role)) {
         const Probe& p = scene.probes()[i];
         const std::string shaft = probeShaft(spec, p.name);
-        result.results.push_back({key + suffix + "." + p.name, p.value(state), "N*m",
+        result.results.push_back({key + suffix + "." + p.name, probeValue(i), "N*m",
                                   what + " " + p.name + " " + at + " on " + shaft +
                                       " (torques on different shafts: not added)",
                                   shaft});
@@ -443,6 +447,37 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             peaks[i].emplace([&probes, i](const SimTK::State& s) { return probes[i].value(s); });
     // speed_body's speed at every step end: the verdicts and start_time.
     SpeedTrace trace;
+    // Steady-operation statistics (issue 29 item 1) over whole periods of
+    // the analysis window, from the trajectory: the summary's steady values
+    // (speed_body's speed, the load torques', load powers' and drive
+    // torques' sums), then every outputs.statistics name; and the peaks of
+    // the body speeds outputs.peaks names.
+    std::string periodWhy;
+    const WindowStatistics::PeriodRule periodRule = statisticsPeriod(*scene, spec, periodWhy);
+    std::vector<WindowStatistics::Fn> statisticsOf = {
+        [&speedBody](const SimTK::State& s) { return pinSpeed(s, speedBody.mobod); },
+        [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::ResistanceTorque); },
+        [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::ResistancePower); },
+        [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::DriveTorque); }};
+    const std::size_t kSteadyQuantities = statisticsOf.size();
+    std::vector<NamedQuantity> statisticsNamed;
+    for (const std::string& name : spec.outputs.statistics)
+        if (const auto q = findQuantity(*scene, name)) {
+            statisticsNamed.push_back(*q);
+            statisticsOf.push_back(q->f);
+        }
+    // Each load and drive torque alone too: torques on different shafts are
+    // reported one by one, never added (their period means likewise).
+    std::map<std::size_t, std::size_t> probeStatistic;  // probe index -> statisticsOf index
+    for (ProbeRole role : {ProbeRole::ResistanceTorque, ProbeRole::DriveTorque})
+        for (std::size_t i : probesOfRole(*scene, role)) {
+            probeStatistic[i] = statisticsOf.size();
+            statisticsOf.push_back([&probes = scene->probes(), i](const SimTK::State& s) { return probes[i].value(s); });
+        }
+    WindowStatistics windowStatistics(statisticsOf, tWindowStart, tWindowEnd, periodRule);
+    std::vector<std::pair<NamedQuantity, PeakTracker>> speedPeaks;
+    for (const std::string& name : spec.outputs.peaks)
+        if (const auto q = findQuantity(*scene, name); q && !q->body.empty()) speedPeaks.emplace_back(*q, PeakTracker(q->f));
     // When each starting sequence first stood finished (a step end's time).
     const auto& sequences = scene->startSequences();
     std::vector<std::optional<double>> sequenceEnd(sequences.size());
@@ -453,6 +488,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         for (auto& p : drivePeaks) p.step(sim, s);
         for (auto& p : peaks)
             if (p) p->step(sim, s);
+        windowStatistics.step(sim, s);
+        for (auto& p : speedPeaks) p.second.step(sim, s);
         // A sequence's end located inside the step (bisection on the
         // trajectory: a ramp ends at its time, not at the next step end).
         for (std::size_t i = 0; i < sequences.size(); ++i)
@@ -519,25 +556,60 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     // A start that did not complete has no steady values: its numbers are
     // what the shafts did at the end of the start window.
     const std::string suffix = reached ? "" : "_at_end";
-    result.results.push_back({reached ? "steady_speed" : "speed_at_end", omega, "rad/s",
-                              "speed of " + speedBody.name + " " + at});
+    // Under a periodic load the steady values are means over whole periods
+    // of the analysis window (WindowStatistics; docs/model-format.md,
+    // "Steady-operation statistics"); the last instant's stay as final.NAME.
+    const bool periodMeans = reached && windowStatistics.valid() && windowStatistics.periods() > 0;
+    const std::string windowText =
+        !windowStatistics.valid() ? std::string()
+                                  : std::to_string(windowStatistics.periods()) + " whole " + periodRule.what + ", " +
+                                        fmt(windowStatistics.windowStart()) + " to " +
+                                        fmt(windowStatistics.windowEnd()) + " s (" + periodWhy + ")";
+    const std::string steadyAt = periodMeans ? "averaged over " + windowText : at;
+    auto steadyValue = [&](std::size_t i, double instant) {
+        return periodMeans ? windowStatistics.values(i).mean : instant;
+    };
+    auto steadyProbe = [&](std::size_t probe) {
+        return steadyValue(probeStatistic.at(probe), scene->probes()[probe].value(steady));
+    };
+    auto instantProbe = [&](std::size_t probe) { return scene->probes()[probe].value(steady); };
+    const double omegaSteady = steadyValue(0, omega);
+    result.results.push_back({reached ? "steady_speed" : "speed_at_end", omegaSteady, "rad/s",
+                              "speed of " + speedBody.name + " " + steadyAt});
     const std::string driveShafts = probeShafts(spec, *scene, ProbeRole::DriveTorque);
     // A torque is reported on its shaft: loads (drives) on one shaft are
     // summed, loads on several shafts are each reported alone, never added
     // (a torque on the table and one on the motor shaft have no sum).
-    addTorqueLines(*scene, spec, steady, ProbeRole::ResistanceTorque, "resistance_torque", suffix, "load torque",
-                   at, result);
-    result.results.push_back({"power" + suffix, sumProbes(*scene, steady, ProbeRole::ResistancePower), "W",
-                              "power absorbed by the loads " + at + ", measured at each load's own shaft and summed (" +
+    addTorqueLines(
+        *scene, spec, ProbeRole::ResistanceTorque, "resistance_torque", suffix, "load torque", steadyAt,
+        [&] { return steadyValue(1, sumProbes(*scene, steady, ProbeRole::ResistanceTorque)); }, steadyProbe, result);
+    result.results.push_back({"power" + suffix, steadyValue(2, sumProbes(*scene, steady, ProbeRole::ResistancePower)),
+                              "W",
+                              "power absorbed by the loads " + steadyAt +
+                                  ", measured at each load's own shaft and summed (" +
                                   probeNames(*scene, ProbeRole::ResistancePower) +
                                   "); friction, damping and brake heat are not in it (mean_power.*)"});
-    if (windowCopied)
+    if (periodMeans)
+        addMeanPower(*scene, windowStatistics.startState(), windowStatistics.endState(), windowText, result);
+    else if (windowCopied)
         addMeanPower(*scene, windowStart, steady,
                      "the last " + fmt(steady.getTime() - windowStart.getTime()) + " s " +
                          (switched ? "before switch-off" : "of the run") + " (" + fmt(windowStart.getTime()) + " to " +
                          fmt(steady.getTime()) + " s)",
                      result);
-    addTorqueLines(*scene, spec, steady, ProbeRole::DriveTorque, "drive_torque", suffix, "drive torque", at, result);
+    addTorqueLines(
+        *scene, spec, ProbeRole::DriveTorque, "drive_torque", suffix, "drive torque", steadyAt,
+        [&] { return steadyValue(3, sumProbes(*scene, steady, ProbeRole::DriveTorque)); }, steadyProbe, result);
+    // The last instant's torques beside the period means, by the same rule.
+    if (periodMeans) {
+        const std::string also = " (the steady values are means over whole periods)";
+        addTorqueLines(
+            *scene, spec, ProbeRole::ResistanceTorque, "final.resistance_torque", "", "load torque", at + also,
+            [&] { return sumProbes(*scene, steady, ProbeRole::ResistanceTorque); }, instantProbe, result);
+        addTorqueLines(
+            *scene, spec, ProbeRole::DriveTorque, "final.drive_torque", "", "drive torque", at + also,
+            [&] { return sumProbes(*scene, steady, ProbeRole::DriveTorque); }, instantProbe, result);
+    }
     if (drivesOnOneShaft)
         result.results.push_back({"peak_drive_torque", peakDrive.peak(), "N*m",
                                   "largest |drive torque| of the run (" + probeNames(*scene, ProbeRole::DriveTorque) +
@@ -574,6 +646,13 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             result.results.push_back(
                 {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
         }
+    addSteadyStatistics(*scene, speedBody, windowStatistics, kSteadyQuantities, statisticsNamed, periodRule,
+                        periodWhy, windowText, reached, steady, at, result);
+    for (const auto& [q, tracker] : speedPeaks) {
+        result.results.push_back({"peak." + q.name, tracker.peak(), q.unit,
+                                  "largest |" + q.name + "| of the run (outputs.peaks; every integration step)"});
+        result.results.push_back({"final." + q.name, q.f(steady), q.unit, q.name + " " + at + " (outputs.peaks)"});
+    }
     addMotorReports(*scene, last, result);
     if (start == "rest")
         for (std::size_t i = 0; i < sequences.size(); ++i)
@@ -582,11 +661,11 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
                                           "instant at which " + sequences[i].name +
                                               "'s starting sequence had finished (starter out of circuit, clutch "
                                               "engaged and locked)"});
-    if (start == "rest" && reached && omega != 0) {
+    if (start == "rest" && reached && omegaSteady != 0) {
         // The instant the integrated speed first reaches 95 % of the steady
         // speed in its direction (interpolated to the crossing).
-        const double sign = omega > 0 ? 1.0 : -1.0;
-        if (const auto t95 = trace.firstReach(0.95 * omega, sign)) {
+        const double sign = omegaSteady > 0 ? 1.0 : -1.0;
+        if (const auto t95 = trace.firstReach(0.95 * omegaSteady, sign)) {
             result.results.push_back({"start_time", *t95, "s",
                                       "instant at which " + speedBody.name + " first reached 95 % of its steady speed "
                                       "(the end of the start; located on the integrated trajectory)"});

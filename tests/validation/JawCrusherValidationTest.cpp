@@ -15,8 +15,9 @@ namespace {
 
 TEST(JawCrusherValidation, EveryCasePasses) {
     const auto rows = jawCrusherCases("");
-    // 9 Fourier rows + 2 work per stroke + 2 speed fluctuation + 2 breakaway.
-    EXPECT_EQ(rows.size(), 15u);
+    // 9 Fourier rows + 2 work per stroke + 3 mean power + 2 speed fluctuation
+    // + 2 breakaway.
+    EXPECT_EQ(rows.size(), 18u);
     for (const auto& r : rows)
         EXPECT_EQ(r.status, "pass") << r.caseName << ": " << r.quantity << " " << r.multibody.value_or(NAN) << " vs "
                                     << r.oracle << " rel " << r.relError << " tol " << r.tolerance << " (" << r.note
