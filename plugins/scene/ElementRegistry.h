@@ -19,8 +19,10 @@ namespace milldyn {
 /// plugin built against another value is refused.
 // 2: SourceLocation::includedFrom; 3: Scene::addSketch; 4: Scene's shared
 // reactions, prescribed trajectories, omit(), LaggedValue current/keep,
-// ElementSchema::outputOnly; 5: Probe::label; 6: Scene::addStartSequence, addSteadyInitializer.
-constexpr int kPluginAbiVersion = 6;
+// ElementSchema::outputOnly; 5: Probe::label; 6: Scene::addStartSequence, addSteadyInitializer;
+// 7: Probe::shaft, Scene's element records, drive facet (addDrive), start holds and regularisation
+// speeds; ElementSchema's analysisNeeds, initialStateKeys, regularisationSpeedKey, adjustableResistanceKey.
+constexpr int kPluginAbiVersion = 7;
 
 /// Builds one element into a scene. Throws SpecError for input the schema
 /// could not catch, std::invalid_argument from element constructors.
