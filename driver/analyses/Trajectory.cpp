@@ -109,6 +109,27 @@ std::optional<double> SpeedTrace::firstReach(double level, double direction) con
     return std::nullopt;
 }
 
+std::pair<double, double> goldenSectionMaximum(const std::function<double(double)>& f, double a, double b) {
+    const double r = 0.5 * (3 - std::sqrt(5.0));
+    double x1 = a + r * (b - a), x2 = b - r * (b - a), f1 = f(x1), f2 = f(x2);
+    for (int k = 0; k < 40 && b - a > 1e-12 * std::max(1.0, std::abs(b)); ++k) {
+        if (f1 >= f2) {
+            b = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = a + r * (b - a);
+            f1 = f(x1);
+        } else {
+            a = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = b - r * (b - a);
+            f2 = f(x2);
+        }
+    }
+    return f1 >= f2 ? std::make_pair(x1, f1) : std::make_pair(x2, f2);
+}
+
 void PeakTracker::step(Simulation& sim, const SimTK::State& s) {
     const double t = s.getTime(), v = std::abs(m_f(s));
     if (m_count > 0 && t <= m_t[m_count - 1]) m_count = 0;  // a restart at the same instant: no interpolation across it
@@ -127,28 +148,10 @@ void PeakTracker::step(Simulation& sim, const SimTK::State& s) {
         if (estimate > m_peak && t0 >= sim.trajectoryFrom()) {
             ++m_refinements;
             auto f = [&](double x) { return std::abs(m_f(sim.trajectoryAt(x))); };
-            const double r = 0.5 * (3 - std::sqrt(5.0));
-            double a = t0, b = t2;
-            double x1 = a + r * (b - a), x2 = b - r * (b - a), f1 = f(x1), f2 = f(x2);
-            for (int k = 0; k < 40 && b - a > 1e-12 * std::max(1.0, std::abs(b)); ++k) {
-                if (f1 >= f2) {
-                    b = x2;
-                    x2 = x1;
-                    f2 = f1;
-                    x1 = a + r * (b - a);
-                    f1 = f(x1);
-                } else {
-                    a = x1;
-                    x1 = x2;
-                    f1 = f2;
-                    x2 = b - r * (b - a);
-                    f2 = f(x2);
-                }
-            }
-            const double best = std::max(f1, f2);
+            const auto [bestAt, best] = goldenSectionMaximum(f, t0, t2);
             if (best > m_peak) {
                 m_peak = best;
-                m_peakTime = f1 >= f2 ? x1 : x2;
+                m_peakTime = bestAt;
             }
         }
     }

@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace milldyn {
@@ -39,6 +40,11 @@ private:
     std::vector<double> m_t, m_w, m_wd;
     double segment(std::size_t i, double t) const;  // Hermite on [m_t[i], m_t[i+1]]
 };
+
+/// The maximum of f over [a, b] by golden-section search (40 reductions at
+/// most, to 1e-12 of b): {where, f there}. f is a quantity on the
+/// trajectory between two step ends, assumed unimodal there.
+std::pair<double, double> goldenSectionMaximum(const std::function<double(double)>& f, double a, double b);
 
 /**
  * The largest |f(state)| of one quantity over the trajectory. Fed every

@@ -1,6 +1,7 @@
 #include "driver/analyses/WindowStatistics.h"
 
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/Trajectory.h"
 #include "plugins/scene/ElementSchema.h"
 #include "plugins/scene/Format.h"
 
@@ -53,25 +54,7 @@ void WindowStatistics::addPoint(Simulation& sim, double t, std::vector<double> v
             if (!(estimate > best)) continue;
             ++m_refinements;
             auto f = [&](double x) { return sign * m_f[i](sim.trajectoryAt(x)); };
-            const double r = 0.5 * (3 - std::sqrt(5.0));
-            double a = p0.t, b = p2.t;
-            double x1 = a + r * (b - a), x2 = b - r * (b - a), f1 = f(x1), f2 = f(x2);
-            for (int k = 0; k < 40 && b - a > 1e-12 * std::max(1.0, std::abs(b)); ++k) {
-                if (f1 >= f2) {
-                    b = x2;
-                    x2 = x1;
-                    f2 = f1;
-                    x1 = a + r * (b - a);
-                    f1 = f(x1);
-                } else {
-                    a = x1;
-                    x1 = x2;
-                    f1 = f2;
-                    x2 = b - r * (b - a);
-                    f2 = f(x2);
-                }
-            }
-            const double located = std::max(f1, f2), at = f1 >= f2 ? x1 : x2;
+            const auto [at, located] = goldenSectionMaximum(f, p0.t, p2.t);
             if (located > best) (sign > 0 ? m_maxRecords : m_minRecords)[i].push_back({at, sign * located});
         }
 }

@@ -662,25 +662,9 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     const SimTK::MobilizedBody mobod = shaft->mobod;
     addStarterEvents(scene, spec.name, closing, impl);
-    if (!st.switchSpeeds.empty()) {
-        // A switch at a speed (as InductionMotor's): the step is a value
-        // kept between steps, advanced at the first accepted step end at or
-        // past the speed (closed transitions only: an open one is timed).
-        const std::vector<double> speeds = st.switchSpeeds;
-        scene.addLaggedValue({spec.name + ".starter_step", true,
-                              [impl, mobod, speeds](const SimTK::State& s) {
-                                  int step = impl->getStarterStep(s);
-                                  while (step < static_cast<int>(speeds.size()) &&
-                                         pinSpeed(s, mobod) >= speeds[static_cast<std::size_t>(step)])
-                                      ++step;
-                                  return static_cast<double>(step);
-                              },
-                              [impl](SimTK::State& s, double v) {
-                                  const int old = impl->getStarterStep(s);
-                                  impl->setStarterStep(s, static_cast<int>(v));
-                                  return std::abs(v - old);
-                              }});
-    }
+    // A switch at a speed (as InductionMotor's; closed transitions only:
+    // an open one is timed).
+    addStarterSpeedSwitching(scene, spec.name, mobod, st.switchSpeeds, impl);
     // Stator open intervals: an open star–delta transition, a supply interruption.
     auto openInterval = [&](double from, double length, const std::string& what) {
         scene.addSwitchEvent({Scene::SwitchEvent::Kind::StarterStep, from, spec.name + " " + what + " opens",

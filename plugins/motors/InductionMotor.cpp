@@ -577,24 +577,7 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
                     [impl](SimTK::State& s, bool on) { impl->setOn(s, on); }, Starter::kindName(st.kind)});
     addStarterEvents(scene, spec.name, st, impl);
     const SimTK::MobilizedBody mobod = shaft->mobod;
-    if (!st.switchSpeeds.empty()) {
-        // A switch at a speed: the step is a value kept between steps,
-        // advanced after the first accepted step past the speed.
-        const std::vector<double> speeds = st.switchSpeeds;
-        scene.addLaggedValue({spec.name + ".starter_step", true,
-                              [impl, mobod, speeds](const SimTK::State& s) {
-                                  int step = impl->getStarterStep(s);
-                                  while (step < static_cast<int>(speeds.size()) &&
-                                         pinSpeed(s, mobod) >= speeds[static_cast<std::size_t>(step)])
-                                      ++step;
-                                  return static_cast<double>(step);
-                              },
-                              [impl](SimTK::State& s, double v) {
-                                  const int old = impl->getStarterStep(s);
-                                  impl->setStarterStep(s, static_cast<int>(v));
-                                  return std::abs(v - old);
-                              }});
-    }
+    addStarterSpeedSwitching(scene, spec.name, mobod, st.switchSpeeds, impl);
     if (st.kind == StarterKind::FrequencyConverter) {
         // The ramp's hold at the torque limit, decided after each accepted step.
         scene.addLaggedValue({spec.name + ".converter_hold", true,

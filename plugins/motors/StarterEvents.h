@@ -6,7 +6,9 @@
 #include "plugins/motors/Starter.h"
 #include "plugins/scene/Scene.h"
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace milldyn {
 
@@ -27,6 +29,29 @@ void addStarterEvents(Scene& scene, const std::string& name, const StarterParams
     if (starter.kind != StarterParams::Kind::DirectOnLine)
         scene.addStartSequence({name, [impl](const SimTK::State& s) { return impl->calcStarterProgress(s); },
                                 [impl](SimTK::State& s) { impl->finishStarter(s); }});
+}
+
+/// A starter switched at speeds (closed transitions): its step is a value
+/// kept between steps (`NAME.starter_step`), advanced at the first accepted
+/// step end at or past each speed of `speeds` (rad/s, of `shaft`'s pin).
+/// Motor: as above, with getStarterStep(const State&).
+template <class Motor>
+void addStarterSpeedSwitching(Scene& scene, const std::string& name, const SimTK::MobilizedBody& shaft,
+                              const std::vector<double>& speeds, Motor* impl) {
+    if (speeds.empty()) return;
+    scene.addLaggedValue({name + ".starter_step", true,
+                          [impl, shaft, speeds](const SimTK::State& s) {
+                              int step = impl->getStarterStep(s);
+                              while (step < static_cast<int>(speeds.size()) &&
+                                     pinSpeed(s, shaft) >= speeds[static_cast<std::size_t>(step)])
+                                  ++step;
+                              return static_cast<double>(step);
+                          },
+                          [impl](SimTK::State& s, double v) {
+                              const int old = impl->getStarterStep(s);
+                              impl->setStarterStep(s, static_cast<int>(v));
+                              return std::abs(v - old);
+                          }});
 }
 
 }  // namespace milldyn
