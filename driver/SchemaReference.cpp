@@ -56,8 +56,8 @@ std::string formatSchemas(const ModelFileReader& reader, const std::vector<std::
                         ? "kinetostatic, or a replayed transient"
                         : "an integrated transient only")
                 << ")\n";
-        for (const auto& [key, what] : s->initialStateKeys)
-            out << "  capability: " << key << " sets " << what << " at t = 0 (transient, initial_state: file only)\n";
+        for (const auto& [key, sets] : s->initialStateKeys)
+            out << "  capability: " << key << " sets " << sets << " at t = 0 (transient, initial_state: file only)\n";
         out << "\n";
     }
     return out.str();
