@@ -59,6 +59,17 @@ void WindowStatistics::addPoint(Simulation& sim, double t, std::vector<double> v
         }
 }
 
+WindowStatistics::Boundary WindowStatistics::makeBoundary(double t, int index, const SimTK::State& at) const {
+    Boundary bd;
+    bd.t = t;
+    bd.index = index;
+    bd.integral = m_integral;
+    bd.integral2 = m_integral2;
+    bd.value = evaluate(at);
+    bd.state = at;
+    return bd;
+}
+
 void WindowStatistics::advance(Simulation& sim, double t, const SimTK::State* endState) {
     const double t0 = m_tLast, h = t - t0;
     if (h > 0) {
@@ -129,26 +140,11 @@ void WindowStatistics::step(Simulation& sim, const SimTK::State& s) {
             break;
         }
         advance(sim, tc, tc == t ? &s : nullptr);
-        Boundary bd;
-        bd.t = tc;
-        bd.index = m_nextIndex++;
-        bd.integral = m_integral;
-        bd.integral2 = m_integral2;
-        const SimTK::State& at = stateAt(tc);
-        bd.value = evaluate(at);
-        bd.state = at;
-        m_period = std::move(bd);
+        m_period = makeBoundary(tc, m_nextIndex++, stateAt(tc));
     }
     advance(sim, tEnd, tEnd == t ? &s : nullptr);
     if (t >= m_b) {
-        Boundary bd;
-        bd.t = tEnd;
-        bd.integral = m_integral;
-        bd.integral2 = m_integral2;
-        const SimTK::State& at = stateAt(tEnd);
-        bd.value = evaluate(at);
-        bd.state = at;
-        m_end = std::move(bd);
+        m_end = makeBoundary(tEnd, 0, stateAt(tEnd));
         m_done = true;
     }
 }

@@ -112,7 +112,8 @@ private:
     /// Integrates [m_tLast, t] (inside the current step) and adds its points.
     void advance(Simulation& sim, double t, const SimTK::State* endState);
     void addPoint(Simulation& sim, double t, std::vector<double> v);
-    Boundary makeBoundary(Simulation& sim, double t, int index, const SimTK::State* at);
+    /// The integrals so far and the quantities at `at`, the state at t.
+    Boundary makeBoundary(double t, int index, const SimTK::State& at) const;
 };
 
 /// A quantity a transient can give statistics or a peak of: a probe by its
