@@ -9,7 +9,9 @@
 #                                  must exit 0
 #   ```yaml tutorial file=NAME     a file the reader writes: written to SCRATCH_DIR/NAME
 #   ```text tutorial-output        what the step before prints: each line must appear
-#                                  in its output, in this order; "..." matches anything
+#                                  in its output, in this order (other lines may come
+#                                  between); "..." inside a line matches any text, a
+#                                  line that is only "..." stands for zero or more lines
 # Fails (exit 1) at the first step that fails or prints something else, and
 # shows that step's output.
 set -uo pipefail
@@ -41,12 +43,15 @@ awk -v dir="$scratch/.steps" '
 steps=$(ls "$scratch/.steps" | sed 's/\..*//' | sort -n | uniq)
 [ -n "$steps" ] || { echo "no tutorial steps found in $doc" >&2; exit 1; }
 
-# "..." is a wildcard; everything else is literal.
+# "..." is a wildcard; everything else is literal. A line of only "..." is
+# skipped: the match is already in order with any lines between, so it means
+# "zero or more lines" (it used to consume exactly one line, and broke when a
+# summary line it stood for moved away).
 matches() {  # matches OUTPUT_FILE EXPECT_FILE
   python3 - "$1" "$2" <<'PY'
 import re, sys
 out = open(sys.argv[1]).read().splitlines()
-expect = [l for l in open(sys.argv[2]).read().splitlines() if l.strip()]
+expect = [l for l in open(sys.argv[2]).read().splitlines() if l.strip() and l.strip() != "..."]
 i = 0
 for e in expect:
     pattern = re.compile("^" + ".*".join(re.escape(part) for part in e.rstrip().split("...")) + "$")

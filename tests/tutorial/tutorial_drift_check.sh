@@ -30,3 +30,31 @@ check() {  # check NAME SED_EXPRESSION EXPECTED_MESSAGE
 check changed_output 's/^PlanetaryLayoutPlugin.cpp$/PlanetaryLayoutPlugin.cc/' \
   "FAILED: step 1 printed something else than the tutorial says"
 check failing_step 's/^ls my_layout$/ls my_layout\/no_such_file/' "FAILED: step 1 exited non-zero"
+
+# A line of only "..." stands for zero or more lines: a one-step tutorial
+# whose output "a" is followed directly by "b" matches "a / ... / b" and
+# "a / b / ...", and still fails when the order is wrong.
+wildcard_doc() {  # wildcard_doc NAME EXPECTED_LINES...
+  local doc=$scratch/$1.md
+  shift
+  { printf '```sh tutorial\nprintf '"'"'a\\nb\\n'"'"'\n```\n\n```text tutorial-output\n'
+    printf '%s\n' "$@"
+    printf '```\n'; } >"$doc"
+  echo "$doc"
+}
+for expect in "a ... b" "a b ..." "... a ... ... b ..."; do
+  # shellcheck disable=SC2086
+  doc=$(wildcard_doc "dots_$(tr -c 'a-z' _ <<<"$expect")" $expect)
+  if ! out=$("$runner" "$src" "$binary" "${doc%.md}" "$doc" 2>&1); then
+    echo "FAIL: a '...' line must match zero lines (expected: $expect); the runner printed:"
+    echo "$out"
+    exit 1
+  fi
+done
+doc=$(wildcard_doc dots_wrong_order b ... a)
+if out=$("$runner" "$src" "$binary" "${doc%.md}" "$doc" 2>&1) || ! grep -qF "expected line not found" <<<"$out"; then
+  echo "FAIL: 'b ... a' must not match output a, b; the runner printed:"
+  echo "$out"
+  exit 1
+fi
+echo "ok: a line of '...' matches zero or more lines"
