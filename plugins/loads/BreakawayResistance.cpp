@@ -1,5 +1,6 @@
 #include "plugins/loads/BreakawayResistance.h"
 
+#include "plugins/loads/LoadTorqueOutputs.h"
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/Format.h"
 
@@ -71,13 +72,8 @@ void buildBreakawayResistance(const ElementSpec& spec, Scene& scene) {
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     const std::string name = spec.name;
     scene.addStartHold({name, [impl, name](const SimTK::State& s) { return impl->stallReason(name, s); }});
-    const SimTK::MobilizedBody mobod = shaft->mobod;
-    scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, SimTK::Stage::Velocity,
-                    [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
-    scene.addProbe({spec.name + ".power", "W", ProbeRole::ResistancePower, SimTK::Stage::Velocity,
-                    [impl, mobod](const SimTK::State& s) { return impl->calcTorque(s) * pinSpeed(s, mobod); }});
-    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load,
-                         [impl, mobod](const SimTK::State& s) { return impl->calcTorque(s) * pinSpeed(s, mobod); }});
+    addShaftLoadTorqueOutputs(scene, spec.name, shaft->mobod,
+                              [impl](const SimTK::State& s) { return impl->calcTorque(s); });
     scene.addDerivedValue({spec.name + ".breakaway_excess", p.staticTorque - p.runningTorque, "N*m",
                            "static torque above the running law's constant part, M_s − M_r"});
     double peak = 0;

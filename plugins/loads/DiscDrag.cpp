@@ -1,5 +1,6 @@
 #include "plugins/loads/DiscDrag.h"
 
+#include "plugins/loads/LoadTorqueOutputs.h"
 #include "plugins/scene/ElementRegistry.h"
 
 #include <cmath>
@@ -57,13 +58,11 @@ const DiscDrag* addDiscDrag(Scene& scene, const std::string& name, const SimTK::
     auto* impl = new DiscDrag(body, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(name, "DiscDrag", force.getForceIndex(), impl);
-    scene.addProbe({name + ".torque", "N*m", ProbeRole::ResistanceTorque, SimTK::Stage::Velocity,
-                    [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
-    scene.addProbe({name + ".power", "W", ProbeRole::ResistancePower, SimTK::Stage::Velocity,
-                    [impl](const SimTK::State& s) { return impl->calcPower(s); }});
+    addLoadTorqueOutputs(
+        scene, name, [impl](const SimTK::State& s) { return impl->calcTorque(s); },
+        [impl](const SimTK::State& s) { return impl->calcPower(s); });
     scene.addProbe({name + ".reynolds", "1", ProbeRole::Generic, SimTK::Stage::Velocity,
                     [impl](const SimTK::State& s) { return impl->calcReynolds(s); }});
-    scene.addEnergyFlow({name, EnergyFlow::Kind::Load, [impl](const SimTK::State& s) { return impl->calcPower(s); }});
     return impl;
 }
 

@@ -1,6 +1,7 @@
 #include "plugins/loads/PeriodicLoad.h"
 
 #include "plugins/loads/HarmonicSeries.h"
+#include "plugins/loads/LoadTorqueOutputs.h"
 #include "plugins/scene/ElementRegistry.h"
 
 #include <cmath>
@@ -166,12 +167,9 @@ void buildPeriodicLoad(const ElementSpec& spec, Scene& scene) {
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
     scene.addExcitation(spec.name, [impl](SimTK::State& s, bool on) { impl->setExcitationOn(s, on); });
-    scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, SimTK::Stage::Velocity,
-                    [impl](const SimTK::State& s) { return impl->getTotalTorque(s); }});
-    scene.addProbe({spec.name + ".power", "W", ProbeRole::ResistancePower, SimTK::Stage::Velocity,
-                    [impl](const SimTK::State& s) { return impl->getAbsorbedPower(s); }});
-    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load,
-                         [impl](const SimTK::State& s) { return impl->getAbsorbedPower(s); }});
+    addLoadTorqueOutputs(
+        scene, spec.name, [impl](const SimTK::State& s) { return impl->getTotalTorque(s); },
+        [impl](const SimTK::State& s) { return impl->getAbsorbedPower(s); });
     scene.note("force " + spec.name + " (PeriodicLoad, " + std::to_string(p.rows) + " rows, " +
                    (p.phases.empty() ? spec.text("arrangement") : std::string("phases as listed")) + ")",
                "loads " + std::to_string(bodies.size()) + " bod" + (bodies.size() == 1 ? "y" : "ies"));

@@ -1,5 +1,6 @@
 #include "plugins/loads/ResistanceTorque.h"
 
+#include "plugins/loads/LoadTorqueOutputs.h"
 #include "plugins/scene/ElementRegistry.h"
 
 #include <cmath>
@@ -82,16 +83,8 @@ void buildResistanceTorque(const ElementSpec& spec, Scene& scene) {
     auto* impl = new ResistanceTorque(scene.forces(), shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
-    const SimTK::MobilizedBody mobod = shaft->mobod;
-    scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, SimTK::Stage::Velocity,
-                    [impl](const SimTK::State& s) { return impl->calcTorque(s); }});
-    scene.addProbe({spec.name + ".power", "W", ProbeRole::ResistancePower, SimTK::Stage::Velocity,
-                    [impl, mobod](const SimTK::State& s) {
-                        return impl->calcTorque(s) * pinSpeed(s, mobod);
-                    }});
-    scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Load, [impl, mobod](const SimTK::State& s) {
-                             return impl->calcTorque(s) * pinSpeed(s, mobod);
-                         }});
+    addShaftLoadTorqueOutputs(scene, spec.name, shaft->mobod,
+                              [impl](const SimTK::State& s) { return impl->calcTorque(s); });
     if (p.feedStartTime > 0)
         scene.addSwitchEvent({Scene::SwitchEvent::Kind::LoadOn, p.feedStartTime, spec.name + " feed opened",
                               [impl](SimTK::State& s) { impl->setFeeding(s, true); }});
