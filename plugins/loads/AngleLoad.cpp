@@ -387,6 +387,48 @@ void buildAngleLoad(const ElementSpec& spec, Scene& scene) {
 
 }  // namespace
 
+namespace {
+
+/// The smallest value of a0 + Σ a_k cos kψ + b_k sin kψ over one cycle and
+/// where it is: 64 samples per harmonic, then the root of the derivative
+/// bracketed around the smallest sample, bisected to 1e-13 rad.
+struct FourierMinimum {
+    double value;
+    double angle;
+};
+FourierMinimum fourierSeriesMinimum(double a0, const std::vector<double>& a, const std::vector<double>& b) {
+    const std::size_t K = std::max(a.size(), b.size());
+    auto at = [&](double psi, int derivative) {
+        double g = derivative == 0 ? a0 : 0.0;
+        for (std::size_t k = 1; k <= K; ++k) {
+            const double ak = k <= a.size() ? a[k - 1] : 0.0, bk = k <= b.size() ? b[k - 1] : 0.0;
+            const double c = std::cos(k * psi), s = std::sin(k * psi);
+            g += derivative == 0 ? ak * c + bk * s : static_cast<double>(k) * (bk * c - ak * s);
+        }
+        return g;
+    };
+    const std::size_t n = 64 * std::max<std::size_t>(K, 1);
+    const double h = kTwoPi / static_cast<double>(n);
+    std::size_t best = 0;
+    double bestValue = at(0, 0);
+    for (std::size_t i = 1; i < n; ++i) {
+        const double v = at(h * static_cast<double>(i), 0);
+        if (v < bestValue) bestValue = v, best = i;
+    }
+    double lo = h * (static_cast<double>(best) - 1), hi = h * (static_cast<double>(best) + 1);
+    if (at(lo, 1) < 0 && at(hi, 1) > 0) {
+        for (int it = 0; it < 200 && hi - lo > 1e-13; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            (at(mid, 1) < 0 ? lo : hi) = mid;
+        }
+        const double psi = 0.5 * (lo + hi);
+        if (at(psi, 0) < bestValue) return {at(psi, 0), std::fmod(psi + kTwoPi, kTwoPi)};
+    }
+    return {bestValue, h * static_cast<double>(best)};
+}
+
+}  // namespace
+
 void registerAngleLoad(ElementRegistry& registry) {
     using P = ParamSchema;
     ElementSchema s;
@@ -458,6 +500,33 @@ void registerAngleLoad(ElementRegistry& registry) {
                 if (!(a[i] >= 0 && a[i] < kTwoPi)) throw e.error("table_angles", "must lie in [0, 2π) rad");
                 if (i > 0 && !(a[i] > a[i - 1])) throw e.error("table_angles", "must increase strictly");
             }
+        }
+        if (shape == "fourier") {
+            // The crushing part must oppose motion at every angle (g >= 0), as
+            // the table and pulse shapes are held to: a series that dips below
+            // 0 would drive the shaft over part of the cycle. Its minimum is
+            // searched on 64 points per harmonic, then refined by bisection of
+            // g' around the smallest sample.
+            const double a0 = e.number("mean_torque");
+            const std::vector<double> a = e.has("cosine_amplitudes") ? e.params.at("cosine_amplitudes").numbers
+                                                                     : std::vector<double>{};
+            const std::vector<double> b =
+                e.has("sine_amplitudes") ? e.params.at("sine_amplitudes").numbers : std::vector<double>{};
+            const FourierMinimum m = fourierSeriesMinimum(a0, a, b);
+            double scale = std::abs(a0);
+            for (double x : a) scale += std::abs(x);
+            for (double x : b) scale += std::abs(x);
+            if (m.value < -1e-12 * scale)
+                throw e.error(
+                    a0 < 0 || (a.empty() && b.empty()) ? "mean_torque"
+                    : e.has("cosine_amplitudes")         ? "cosine_amplitudes"
+                                                         : "sine_amplitudes",
+                    "the crushing magnitude g(ψ) = a0 + Σ a_k cos kψ + b_k sin kψ falls to " +
+                        formatNumber(m.value, 6) + " N*m at ψ = " + formatNumber(m.angle, 6) +
+                        " rad: it must be >= 0 at every angle (the crushing part opposes motion; below 0 it "
+                        "would drive the shaft). A series truncated from a pulse undershoots: give the pulse "
+                        "itself (shape: half_sine_pulse, shaped_pulse or table); what returns energy goes in "
+                        "the conservative part (spring_cosine_amplitudes, spring_sine_amplitudes)");
         }
         if (pulse && !(e.number("pulse_width") > 0)) throw e.error("pulse_width", "a pulse needs a width > 0");
         if (shape == "half_sine_pulse" && !e.has("peak_torque"))

@@ -29,7 +29,7 @@ namespace {
 using Complex = std::complex<double>;
 
 constexpr double kJ1 = 0.5, kJ2 = 0.2, kC = 800.0, kD = 1.0, kGamma = 12.5, kM00 = 2000.0;
-constexpr double kMean = 50.0;  // a0 of the crushing part [N*m]
+constexpr double kMean = 100.0;  // a0 of the crushing part [N*m] (g >= 0 at every angle: 100 − 50 − 10 − 5 > 0)
 constexpr int kCycles = 2;      // n, cycles per revolution
 
 std::string num(double v) {
@@ -80,7 +80,7 @@ std::size_t column(const AnalysisResult& r, const std::string& name) {
 // is H_b(0) = 1, so the dynamic factor is |H_b(P)| as well.
 TEST(AngleLoadResponse, FrequencyResponseOfOneShaftIsTheTwoMassReceptance) {
     const AnalysisResult r = runAnalysis(readModelText(
-        model("bodies: [b], shape: fourier, cycles_per_revolution: 2, mean_torque: 50 N*m, "
+        model("bodies: [b], shape: fourier, cycles_per_revolution: 2, mean_torque: " + num(kMean) + " N*m, "
               "cosine_amplitudes: [30 N*m, 0 N*m, 5 N*m], sine_amplitudes: [40 N*m, 10 N*m]",
               "analysis: frequency_response, load: crushing, harmonic: 1, frequency_min: 1 rad/s, "
               "frequency_max: 1000 rad/s, points: 25"),
@@ -103,7 +103,7 @@ TEST(AngleLoadResponse, FrequencyResponseOfTwoShaftsAddsTheirPhasedReceptances) 
     for (int k : {1, 3}) {
         const AnalysisResult r = runAnalysis(readModelText(
             model("bodies: [a, b], phases: [" + num(phiA) + " rad, " + num(phiB) +
-                      " rad], shape: fourier, cycles_per_revolution: 2, mean_torque: 50 N*m, "
+                      " rad], shape: fourier, cycles_per_revolution: 2, mean_torque: " + num(kMean) + " N*m, "
                       "cosine_amplitudes: [30 N*m, 0 N*m, 5 N*m], sine_amplitudes: [40 N*m, 10 N*m, 2 N*m]",
                   "analysis: frequency_response, load: crushing, harmonic: " + std::to_string(k) +
                       ", frequency_min: 1 rad/s, frequency_max: 1000 rad/s, points: 25"),
@@ -127,7 +127,7 @@ TEST(AngleLoadResponse, FrequencyResponseOfTwoShaftsAddsTheirPhasedReceptances) 
 TEST(AngleLoadResponse, ResonanceMapTakesTheHarmonicsAtTheirOrdersOfTheShaftSpeed) {
     const std::vector<double> a = {30, 0, 5}, b = {40, 10, 0};
     const AnalysisResult r = runAnalysis(readModelText(
-        model("bodies: [b], shape: fourier, cycles_per_revolution: 2, mean_torque: 50 N*m, listed_harmonics: 3, "
+        model("bodies: [b], shape: fourier, cycles_per_revolution: 2, mean_torque: " + num(kMean) + " N*m, listed_harmonics: 3, "
               "cosine_amplitudes: [30 N*m, 0 N*m, 5 N*m], sine_amplitudes: [40 N*m, 10 N*m]",
               "analysis: resonance_map, load: crushing, speed_min: 1 rad/s, speed_max: 100 rad/s, points: 34"),
         "angle.yaml", defaultModelReader()));
@@ -169,6 +169,34 @@ TEST(AngleLoadResponse, AShaftAngleLoadRefusesATimeCheckAndAnEventCount) {
     } catch (const SpecError& e) {
         EXPECT_EQ(e.key(), "scenario.load_events_per_revolution");
     }
+}
+
+
+// The crushing part opposes motion at every angle, for a series as for a
+// table or a pulse: g(ψ) = 100 + 150 cos ψ falls to −50 N*m at ψ = π, and
+// is refused at the key that takes it below 0, with the minimum and where;
+// 50 + 50 cos 2ψ just touches 0 (at ψ = π/2) and is taken.
+TEST(AngleLoadResponse, AFourierCrushingPartThatWouldDriveTheShaftIsRefused) {
+    const std::string scenario = "analysis: linearize";
+    try {
+        readModelText(model("bodies: [b], shape: fourier, mean_torque: 100 N*m, cosine_amplitudes: [150 N*m]", scenario),
+                      "angle.yaml", defaultModelReader());
+        ADD_FAILURE() << "a crushing part down to −50 N*m was taken";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.key(), "crushing.cosine_amplitudes");
+        const std::string what = e.what();
+        EXPECT_NE(what.find("falls to -50 N*m at ψ = 3.14159 rad"), std::string::npos) << what;
+    }
+    try {
+        readModelText(model("bodies: [b], shape: fourier, mean_torque: -1 N*m", scenario), "angle.yaml",
+                      defaultModelReader());
+        ADD_FAILURE() << "a negative constant crushing torque was taken";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.key(), "crushing.mean_torque");
+    }
+    EXPECT_NO_THROW(readModelText(
+        model("bodies: [b], shape: fourier, mean_torque: 50 N*m, cosine_amplitudes: [0 N*m, 50 N*m]", scenario),
+        "angle.yaml", defaultModelReader()));
 }
 
 }  // namespace
