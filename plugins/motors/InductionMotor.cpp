@@ -516,25 +516,29 @@ void crossCheckInductionMotor(const ElementSpec& e) {
     }
 }
 
-/// A static curve has no switch-on transient: direct on line, with the
-/// datasheet's current data and efficiency, the dq machine fitted to the
-/// same data (double cage, CageCircuitFit) estimates the switch-on peak
-/// with the rotor held for three cycles (derived values; a transient notes
-/// when it exceeds the static curve's largest torque, MotorReports).
+/// A static curve has no electrical transient: at switch-on, and at every
+/// switching of a starter (star→delta, resistance steps), the dq machine of
+/// the same data peaks above it. With the datasheet's current data and
+/// efficiency, the dq machine fitted to the same data (double cage,
+/// CageCircuitFit) estimates the full-voltage switch-on peak with the rotor
+/// held for three cycles, for every starter: it is what a direct-on-line
+/// start, an open-transition reclosure that finds the flux out of phase, or
+/// a reclosure after an interruption can reach. The peak of a switch-on at a
+/// voltage u·V_n is u² times it (the machine is linear in the voltage, its
+/// torque quadratic): star (u = 1/√3) and a soft start's initial voltage.
+/// Derived values only; the run's notes (MotorReports) say per starter what
+/// the static curve leaves out.
 void addSwitchOnPeakEstimate(const ElementSpec& spec, Scene& scene, const InductionMotor& motor) {
     const InductionMotorParams& p = motor.params();
     const TorqueSpeedCurve& c = motor.curve();
-    if (p.starter.kind != StarterParams::Kind::DirectOnLine || p.law == TorqueSpeedCurveParams::Law::Linear) return;
+    if (p.law == TorqueSpeedCurveParams::Law::Linear) return;
     const double Mn = p.ratedTorque, wc = p.synchronousSpeed;
     double staticMax = 0;
     for (int i = 0; i <= 2000; ++i) staticMax = std::max(staticMax, c.torque(wc * i / 2000));
-    if (!(p.ratedCurrent > 0 && p.ratedPowerFactor > 0 && p.lockedRotorCurrentRatio > 0 && p.ratedEfficiency > 0)) {
-        scene.note("force " + spec.name + " switch-on peak",
-                   "not estimated: a static curve has no switch-on transient, so its peak torques are no design load; "
-                   "rated_current, rated_power_factor, locked_rotor_current_ratio and rated_efficiency give the dq "
-                   "machine's estimate (or use DqInductionMotor)");
-        return;
-    }
+    scene.addDerivedValue({spec.name + ".static_curve_peak", staticMax, "N*m",
+                           "largest torque of the static torque-speed curve (rated supply)"});
+    if (!(p.ratedCurrent > 0 && p.ratedPowerFactor > 0 && p.lockedRotorCurrentRatio > 0 && p.ratedEfficiency > 0))
+        return;  // no estimate: the run's notes say which data would give one
     // Per-unit torques do not depend on the voltage level: V_n such that
     // the data's input √3·V·I·cos φ is P_n/η; f from ωc with the nearest p at 50 Hz.
     MotorDatasheet d;
@@ -558,10 +562,21 @@ void addSwitchOnPeakEstimate(const ElementSpec& spec, Scene& scene, const Induct
     }
     const double peak = cageSwitchOnPeakTorque(fit.circuit, fit.phaseVoltage, d.frequency, d.polePairs, 3.0);
     scene.addDerivedValue({spec.name + ".dq_switch_on_peak_estimate", peak, "N*m",
-                           "switch-on peak air-gap torque of the dq machine fitted to the same data (double cage, "
-                           "CageCircuitFit), rotor held for the first 3 cycles: an estimate, not this run's"});
-    scene.addDerivedValue({spec.name + ".static_curve_peak", staticMax, "N*m",
-                           "largest torque of the static torque-speed curve"});
+                           "switch-on peak air-gap torque at full voltage of the dq machine fitted to the same data "
+                           "(double cage, CageCircuitFit), rotor held for the first 3 cycles: an estimate, not this "
+                           "run's"});
+    const StarterParams& st = p.starter;
+    double u = 1;  // the voltage the starter switches on at, per unit
+    if (st.kind == StarterParams::Kind::StarDelta) u = 1 / std::sqrt(3.0);
+    if (st.kind == StarterParams::Kind::SoftStart) u = st.initialVoltage;
+    if (u < 1)
+        scene.addDerivedValue({spec.name + ".dq_starter_switch_on_peak_estimate", u * u * peak, "N*m",
+                               "the same estimate at the starter's switch-on voltage " + formatNumber(u, 4) +
+                                   "·V_n (× u²; " +
+                                   (st.kind == StarterParams::Kind::StarDelta ? std::string("star")
+                                                                              : std::string("soft start's initial "
+                                                                                            "voltage")) +
+                                   ")"});
 }
 
 void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
