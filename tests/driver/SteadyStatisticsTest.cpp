@@ -255,6 +255,19 @@ TEST(PeriodicHold, ADriftingPeriodicStartIsNotHeld) {
         << r.verdictText;
 }
 
+// A run too short to hold two load periods before its end (0.3 s against
+// 2 × 0.2 s) keeps its 0.1 s hold window, which holds no whole period: the
+// hold is judged on the instantaneous speed, whose ±A ripple leaves the
+// band, and the verdict says why.
+TEST(PeriodicHold, AWindowWithoutTwoWholePeriodsIsJudgedInstantaneouslyAndSaysSo) {
+    const AnalysisResult r = runShaft({{"scenario.end_time", "0.3 s"}, {"scenario.hold_time", "0.1 s"}});
+    EXPECT_EQ(r.verdict, "ran") << r.verdictText;
+    EXPECT_NE(r.verdictText.find("(on the instantaneous speed: the window, 0.2 to 0.3 s, holds 0 whole periods"),
+              std::string::npos)
+        << r.verdictText;
+    for (const auto& n : r.notes) EXPECT_EQ(n.find("analysis window lengthened"), std::string::npos) << n;
+}
+
 // The sampling never moves the period means the hold is judged on.
 TEST(PeriodicHold, TheVerdictDoesNotDependOnTheSampleInterval) {
     for (const char* dt : {"1 ms", "0.3 s", "2 s"}) {
