@@ -89,6 +89,10 @@ struct HoldCheck {
     bool held = false;
     bool stillRising = false;
     double tStart = 0, tEnd = 0, wStart = 0, wEnd = 0, wRef = 0, band = 0, hold = 0, worst = 0, tol = 0;
+    /// The speed the verdict judged held: the last instant's (wEnd), or
+    /// under a periodic load the mean over the window's last whole period.
+    double wHeld = 0;
+    bool byPeriods = false;  ///< judged on the period means (WindowStatistics)
     /// +1 or −1: the way the drive turns speed_body (the sign of its hinted
     /// running speed, referred through the train's signed ratios; without a
     /// hint, the way it turned at the end). Progress is direction·ω.
@@ -96,6 +100,10 @@ struct HoldCheck {
     bool hinted = false;
     std::string holdText;  ///< "within ±… rad/s (… % of ω_ref) for the last … s before …"
 };
+
+/// Whole load periods the analysis window must hold for the hold to be
+/// judged on period means (two: one mean alone shows no drift).
+constexpr int kHoldPeriods = 2;
 
 /**
  * The speed is *held* when, over the last hold_time of the start window
@@ -106,9 +114,19 @@ struct HoldCheck {
  * that band. The reference speed ω_ref is |the drives' running speed
  * referred to speed_body| (Scene::speedHints, signed through every ratio;
  * the final speed if no drive hints one).
+ *
+ * Under a periodic load (the analysis window cut into whole periods,
+ * WindowStatistics, outputs.statistics_period) the speed ripples with the
+ * load however steady the running, and a ripple wider than the band is no
+ * drift: there the speed is held when its means over the window's whole
+ * periods, m_1 … m_N (N >= kHoldPeriods), each lie within the band of the
+ * last, m_N (a drifting run moves its period means; a steady periodic one
+ * repeats them to the integrator's accuracy). A window holding fewer whole
+ * periods falls back to the instantaneous check, and the text says so.
  */
 HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& body, const SpeedTrace& trace,
-                    double switchTime) {
+                    double switchTime, double hold, const WindowStatistics& periods,
+                    const WindowStatistics::PeriodRule& rule) {
     const ElementSpec& sc = spec.scenario;
     HoldCheck h;
     if (trace.empty()) return h;
@@ -125,7 +143,7 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
     h.wRef = h.hinted ? std::abs(hint->second) : std::max(std::abs(h.wEnd), std::abs(h.wStart));
     h.direction = h.hinted ? (hint->second > 0 ? 1.0 : -1.0) : (h.wEnd < 0 ? -1.0 : 1.0);
     h.tol = sc.number("start_tolerance");
-    h.hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (h.tEnd - h.tStart);
+    h.hold = hold;
     h.band = h.tol * h.wRef;
     const bool held = h.tStart <= h.tEnd - h.hold && h.wRef > 0;
     const double tWindow = std::max(h.tEnd - h.hold, h.tStart);
@@ -137,6 +155,7 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
     const double drift = h.hold > 0 ? std::abs(h.wEnd - wWindow) / h.hold : 0;
     const double elapsed = h.tEnd - h.tStart;
     h.held = held && h.worst <= h.band && drift * h.hold <= h.band;
+    h.wHeld = h.wEnd;
     // A stall is an equilibrium: below the started speed a shaft that
     // gained speed (in the drive's direction) over the second half of the
     // run at >= a tenth of its mean rate since the start is not stalled but
@@ -150,8 +169,31 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
     // rising" and "not held"; issue 26 item 5).
     h.stillRising = h.tEnd > tMid && h.direction * (h.wEnd - wMid) / (h.tEnd - tMid) > 0.1 * meanRate &&
                     h.direction * (h.wEnd - wMid) > 0.01 * h.band;
+    const std::string before = h.tEnd >= switchTime ? "switch-off" : "the end";
     h.holdText = "within ±" + fmt(h.band) + " rad/s (" + fmt(h.tol * 100) + " % of ω_ref) for the last " +
-                 fmt(h.hold) + " s before " + (h.tEnd >= switchTime ? "switch-off" : "the end");
+                 fmt(h.hold) + " s before " + before;
+    if (rule.kind != WindowStatistics::PeriodRule::Kind::None) {
+        const std::vector<WindowStatistics::PeriodMean> means =
+            periods.valid() ? periods.periodMeans(0) : std::vector<WindowStatistics::PeriodMean>{};
+        if (static_cast<int>(means.size()) >= kHoldPeriods) {
+            h.byPeriods = true;
+            h.wHeld = means.back().mean;
+            h.worst = 0;
+            for (const auto& m : means) h.worst = std::max(h.worst, std::abs(m.mean - h.wHeld));
+            h.held = held && h.worst <= h.band;
+            const auto swing = trace.range(means.front().t0, means.back().t1);
+            h.holdText = "as its mean over each of the last " + std::to_string(means.size()) + " whole " + rule.what +
+                         " (" + fmt(means.front().t0) + " to " + fmt(means.back().t1) + " s, before " + before +
+                         "), the period means within ±" + fmt(h.band) + " rad/s (" + fmt(h.tol * 100) +
+                         " % of ω_ref) of the last; under the periodic load the instantaneous speed swung between " +
+                         fmt(swing.first) + " and " + fmt(swing.second) + " rad/s";
+        } else {
+            h.holdText += " (on the instantaneous speed: the window, " + fmt(h.tEnd - h.hold) + " to " +
+                          fmt(h.tEnd) + " s, holds " + std::to_string(means.size()) + " whole " + rule.what +
+                          ", fewer than the " + std::to_string(kHoldPeriods) +
+                          " its period means are judged on; lengthen scenario.hold_time or end_time)";
+        }
+    }
     // "within ±0 rad/s" judged nothing (issue 26 item 5): with no drive
     // hinting a running speed and the shaft at 0 rad/s at both ends of the
     // window there is no reference speed to form a band from.
@@ -217,10 +259,11 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
     const std::string ref = h.hinted ? "the drives' running speed " + fmt(h.direction * h.wRef) +
                                            " rad/s referred to " + body.name
                                      : "its final speed (no drive hints a rated speed)";
-    const double wRpm = h.wEnd * 30 / SimTK::Pi;
+    const double wRpm = h.wEnd * 30 / SimTK::Pi, heldRpm = h.wHeld * 30 / SimTK::Pi;
     // Progress in the drive's direction: a shaft turning against its drive
-    // (a stalled train rolled back) has made none, whatever its |ω|.
-    const double progress = h.direction * h.wEnd;
+    // (a stalled train rolled back) has made none, whatever its |ω|. Under
+    // a periodic load, the last period's mean.
+    const double progress = h.direction * h.wHeld;
     if (!running.empty()) {
         result.verdict = "unfinished";
         result.verdictText = "start unfinished: the starting sequence had not finished" + endText + " (" + running +
@@ -229,7 +272,7 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
                              "): no start time or steady values are given; lengthen end_time past the sequence's end";
     } else if (h.held && waiting.empty() && progress >= fraction * h.wRef) {
         result.verdict = "completed";
-        result.verdictText = "start completed: " + body.name + " held " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
+        result.verdictText = "start completed: " + body.name + " held " + fmt(h.wHeld) + " rad/s (" + fmt(heldRpm) +
                              " rpm) " + h.holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref +
                              (finished.empty() ? "" : "; " + finished);
     } else if (h.held && !h.stillRising) {
@@ -246,7 +289,7 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
             if (p.role == ProbeRole::ResistanceTorque)
                 load += (load.empty() ? "" : ", ") + p.name + " = " + fmt(v) + " N*m";
         }
-        result.verdictText = "start stalled: " + body.name + " held " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) +
+        result.verdictText = "start stalled: " + body.name + " held " + fmt(h.wHeld) + " rad/s (" + fmt(heldRpm) +
                              " rpm, " + fmt(100 * progress / h.wRef) + " % of " + ref + ") " + h.holdText +
                              (waiting.empty() ? ", below the " + fmt(fraction * 100) + " % that counts as started"
                                               : " while the starting sequence waits on the shaft" + endText + " (" +
@@ -292,7 +335,7 @@ void judgeRun(const Scene& scene, const ModelSpec& spec, const SceneBody& body, 
                                  ? "the solved steady running"
                                  : "the bodies' given initial state (initial_* keys)";
     const std::string began = "started from " + from + ", " + body.name + " at " + fmt(h.wStart) + " rad/s";
-    const std::string heldText = h.held ? body.name + " held " + fmt(h.wEnd) + " rad/s " + h.holdText
+    const std::string heldText = h.held ? body.name + " held " + fmt(h.wHeld) + " rad/s " + h.holdText
                                         : body.name + " was not held " + h.holdText + " (it moved by up to " +
                                               fmt(h.worst) + " rad/s, ending at " + fmt(h.wEnd) + " rad/s)";
     const std::string ref = "; ω_ref = " + fmt(h.wRef) + " rad/s, " +
@@ -423,7 +466,34 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     // (or the end). The verdict judges the speed over it, the power split
     // averages over it (from the first sample in it to the steady sample).
     const double tWindowEnd = std::min(switchTime, endTime);
-    const double hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (tWindowEnd - state.getTime());
+    double hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (tWindowEnd - state.getTime());
+    // How outputs.statistics_period cuts the window into whole periods.
+    std::string periodWhy;
+    const WindowStatistics::PeriodRule periodRule = statisticsPeriod(*scene, spec, periodWhy);
+    // Under a periodic load the hold is judged on period means (checkHold),
+    // which needs kHoldPeriods whole periods in the window: a shorter hold
+    // window is lengthened to them when the run before switch-off holds
+    // them (a period of revolutions is estimated from the shaft's hinted
+    // running speed, with a quarter of margin for a slower shaft).
+    {
+        double period = 0;
+        if (periodRule.kind == WindowStatistics::PeriodRule::Kind::Time) period = periodRule.period;
+        if (periodRule.kind == WindowStatistics::PeriodRule::Kind::Angle) {
+            const auto hints = scene->speedHints();
+            const auto hint = hints.find(periodRule.body);
+            if (hint != hints.end() && std::isfinite(hint->second) && hint->second != 0)
+                period = 1.25 * 2 * SimTK::Pi / std::abs(hint->second);
+        }
+        const double need = kHoldPeriods * period;
+        if (period > 0 && need > hold && need <= tWindowEnd - state.getTime()) {
+            result.notes.push_back("analysis window lengthened from " + fmt(hold) + " s (scenario.hold_time" +
+                                   (sc.number("hold_time") > 0 ? std::string() : ", a tenth of the run") + ") to " +
+                                   fmt(need) + " s, to hold " + std::to_string(kHoldPeriods) + " whole " +
+                                   periodRule.what + " (" + periodWhy +
+                                   "): the hold verdict and the steady values are judged over whole load periods");
+            hold = need;
+        }
+    }
     const double tWindowStart = tWindowEnd - hold - 1e-9 * std::max(1.0, std::abs(tWindowEnd));
     SimTK::State windowStart;
     bool windowCopied = false;
@@ -452,8 +522,6 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     // (speed_body's speed, the load torques', load powers' and drive
     // torques' sums), then every outputs.statistics name; and the peaks of
     // the body speeds outputs.peaks names.
-    std::string periodWhy;
-    const WindowStatistics::PeriodRule periodRule = statisticsPeriod(*scene, spec, periodWhy);
     std::vector<WindowStatistics::Fn> statisticsOf = {
         [&speedBody](const SimTK::State& s) { return pinSpeed(s, speedBody.mobod); },
         [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::ResistanceTorque); },
@@ -478,6 +546,18 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     std::vector<std::pair<NamedQuantity, PeakTracker>> speedPeaks;
     for (const std::string& name : spec.outputs.peaks)
         if (const auto q = findQuantity(*scene, name); q && !q->body.empty()) speedPeaks.emplace_back(*q, PeakTracker(q->f));
+    // A charge's fraction of its critical speed (SegmentCharge's
+    // NAME.fraction_of_critical), its largest over the trajectory for the
+    // near-centrifuging warning. Named by type: a capability would need a
+    // field in ElementSchema.h, which this change leaves alone.
+    std::vector<std::pair<std::string, PeakTracker>> criticalFractions;
+    for (const auto& e : spec.elements) {
+        if (e.type != "SegmentCharge") continue;
+        for (std::size_t i = 0; i < probes.size(); ++i)
+            if (probes[i].name == e.name + ".fraction_of_critical")
+                criticalFractions.emplace_back(
+                    e.name, PeakTracker([&probes, i](const SimTK::State& s) { return probes[i].value(s); }));
+    }
     // When each starting sequence first stood finished (a step end's time).
     const auto& sequences = scene->startSequences();
     std::vector<std::optional<double>> sequenceEnd(sequences.size());
@@ -490,6 +570,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             if (p) p->step(sim, s);
         windowStatistics.step(sim, s);
         for (auto& p : speedPeaks) p.second.step(sim, s);
+        for (auto& p : criticalFractions) p.second.step(sim, s);
         // A sequence's end located inside the step (bisection on the
         // trajectory: a ramp ends at its time, not at the next step end).
         for (std::size_t i = 0; i < sequences.size(); ++i)
@@ -544,7 +625,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     const std::string at = switched ? "just before switch-off" : "at the end of the run";
 
     // The start verdict (from rest only): over the trajectory before switch-off.
-    const HoldCheck holdCheck = checkHold(*scene, spec, speedBody, trace, switchTime);
+    const HoldCheck holdCheck = checkHold(*scene, spec, speedBody, trace, switchTime, hold, windowStatistics, periodRule);
     if (start == "rest")
         judgeStart(*scene, spec, speedBody, holdCheck, steady, result);
     else
@@ -653,6 +734,13 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
                                   "largest |" + q.name + "| of the run (outputs.peaks; every integration step)"});
         result.results.push_back({"final." + q.name, q.f(steady), q.unit, q.name + " " + at + " (outputs.peaks)"});
     }
+    // Above 90 % of critical speed anywhere on the trajectory (maxima
+    // located inside the steps, as the peaks), not only at an output row.
+    for (const auto& [charge, tracker] : criticalFractions)
+        if (tracker.peak() > 0.9)
+            result.notes.push_back("warning: charge '" + charge + "' ran at up to " + formatNumber(100 * tracker.peak(), 4) +
+                                   " % of its critical speed (above 90 %: the charge nears centrifuging), at " +
+                                   fmt(tracker.peakTime()) + " s (located on the integrated trajectory)");
     addMotorReports(*scene, last, result);
     if (start == "rest")
         for (std::size_t i = 0; i < sequences.size(); ++i)

@@ -141,6 +141,7 @@ void WindowStatistics::step(Simulation& sim, const SimTK::State& s) {
         }
         advance(sim, tc, tc == t ? &s : nullptr);
         m_period = makeBoundary(tc, m_nextIndex++, stateAt(tc));
+        m_periodIntegrals.emplace_back(tc, m_integral);
     }
     advance(sim, tEnd, tEnd == t ? &s : nullptr);
     if (t >= m_b) {
@@ -171,6 +172,17 @@ WindowStatistics::Values WindowStatistics::values(std::size_t i) const {
     return v;
 }
 
+std::vector<WindowStatistics::PeriodMean> WindowStatistics::periodMeans(std::size_t i) const {
+    std::vector<PeriodMean> out;
+    double t0 = m_a, before = 0;
+    for (const auto& [t, integral] : m_periodIntegrals) {
+        if (t > t0) out.push_back({t0, t, (integral[i] - before) / (t - t0)});
+        t0 = t;
+        before = integral[i];
+    }
+    return out;
+}
+
 std::optional<NamedQuantity> findQuantity(const Scene& scene, const std::string& name) {
     for (const auto& b : scene.bodies())
         if (speedColumnName(scene, b) == name) {
@@ -192,6 +204,7 @@ WindowStatistics::PeriodRule statisticsPeriod(const Scene& scene, const ModelSpe
     auto revolutionsOf = [&](const SceneBody& body) {
         rule.kind = Kind::Angle;
         rule.what = "revolutions of " + body.name;
+        rule.body = body.name;
         const SimTK::MobilizedBody mobod = body.mobod;
         rule.angle = [mobod](const SimTK::State& s) { return pinAngle(s, mobod); };
     };

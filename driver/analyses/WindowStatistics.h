@@ -54,7 +54,12 @@ public:
         enum class Kind { None, Time, Angle } kind = Kind::None;
         double period = 0;  ///< Time: T [s]
         Fn angle;           ///< Angle: the pin angle θ [rad] whose whole turns are the periods
+        std::string body;   ///< Angle: the body whose revolutions they are
         std::string what;   ///< "revolutions of B", "periods of 0.2 s" (after "whole")
+    };
+    /// One whole period [t0, t1] of the window and a quantity's mean over it.
+    struct PeriodMean {
+        double t0 = 0, t1 = 0, mean = 0;
     };
     struct Values {
         double mean = 0, rms = 0, min = 0, max = 0, tMin = 0, tMax = 0;
@@ -76,6 +81,9 @@ public:
     const SimTK::State& startState() const { return m_startState; }
     const SimTK::State& endState() const { return boundary().state; }
     Values values(std::size_t i) const;
+    /// Quantity i's mean over each whole period of the window, in order
+    /// (empty without whole periods): (∫ over the period)/(its length).
+    std::vector<PeriodMean> periodMeans(std::size_t i) const;
     long refinements() const { return m_refinements; }
 
 private:
@@ -105,6 +113,7 @@ private:
     std::vector<std::vector<Record>> m_maxRecords, m_minRecords;  // raises of the running extremes
     SimTK::State m_startState;
     std::optional<Boundary> m_period, m_end;
+    std::vector<std::pair<double, std::vector<double>>> m_periodIntegrals;  // every period boundary: t, ∫f from a
     long m_refinements = 0;
 
     const Boundary& boundary() const { return m_period ? *m_period : *m_end; }

@@ -157,6 +157,54 @@ TEST(ChargePowerLaw, WarnsAboveNinetyPercentOfCritical) {
     for (const auto& n : normal.notes) EXPECT_EQ(n.find("warning"), std::string::npos) << n;
 }
 
+/// A free shell (no drive) at 88 % of critical, swung by a PeriodicLoad of
+/// mean 0 and phase π: the torque on the shell is +b·sin(P·t), so
+/// ω(t) = ω_0 + (b/(J·P))·(1 − cos P·t), less the small charge's drag
+/// (T_c/J <= 3e-3 rad/s² here: < 0.3 % of ω_c over the 2 s). The speed
+/// peaks at ω_0 + 2b/(J·P) = 0.92·ω_c at t = T/2, 3T/2, … and is back at
+/// ω_0 (its minimum) at t = 0, T, 2T, … (T = 2π/P = 0.5 s): rows every T
+/// or 2T see only the minimum.
+const char* kSwungShell = R"(format_version: 1
+name: free shell swung through 90 % of critical between the rows
+gravity: [0 m/s^2, -9.81 m/s^2, 0 m/s^2]
+bodies:
+  - {name: shell, inertia: 4000000 kg*m^2, joint: {type: pin, parent: ground}}
+elements:
+  - {type: SegmentCharge, name: charge, drum: shell, drum_radius: 2.0 m, length: 0.05 m,
+     bulk_density: 4650 kg/m^3, fill: 40 %, motion: torque_arm, lag_from: vertical, power_law: bond,
+     initial_speed_fraction: 0.88}
+  - {type: PeriodicLoad, name: swing, bodies: [shell], rows: 1, mean_torque: 0 N*m,
+     amplitudes: [2226300 N*m], fundamental_frequency: 12.566370614359172 rad/s,
+     phases: [3.141592653589793 rad]}
+scenario: {analysis: transient, initial_state: file, end_time: 2 s, speed_body: shell}
+outputs: {sample_interval: 0.5 s, plots: false}
+)";
+
+TEST(ChargePowerLaw, WarnsAboveNinetyPercentOfCriticalBetweenTheRows) {
+    const double wc = oracles::criticalSpeed(4.0, 9.81), J = 4e6, P = 4 * kPi, b = 2226300;
+    ASSERT_NEAR(0.88 + 2 * b / (J * P) / wc, 0.92, 1e-3);  // the swing's top, by the formula above
+    for (const char* dt : {"0.5 s", "1 s"}) {
+        const AnalysisResult r =
+            runAnalysis(readModelText(kSwungShell, "swung_shell.yaml", defaultModelReader(),
+                                      {{"outputs.sample_interval", dt}}));
+        // The rows never reach 90 %: a check on them would stay silent.
+        const std::size_t col = r.findColumn("charge.fraction_of_critical");
+        ASSERT_NE(col, std::string::npos);
+        double rowsTop = 0;
+        for (const auto& row : r.rows) rowsTop = std::max(rowsTop, row[col]);
+        EXPECT_LT(rowsTop, 0.885) << dt;
+        bool warned = false;
+        const std::string prefix = "warning: charge 'charge' ran at up to ";
+        for (const auto& n : r.notes) {
+            if (n.find(prefix) != 0) continue;
+            warned = true;
+            EXPECT_NEAR(std::stod(n.substr(prefix.size())), 92.0, 0.3) << n;
+            EXPECT_NE(n.find("located on the integrated trajectory"), std::string::npos) << n;
+        }
+        EXPECT_TRUE(warned) << dt;
+    }
+}
+
 TEST(ChargePowerLaw, LagOutsideZeroToNinetyIsAnInputError) {
     std::string e = errorOf([&] { readMap({{"    power_law: bond", "    power_law: lag\n    lag: -5 deg"}}); });
     EXPECT_NE(e.find("ball_mill_4x6m_power_map.yaml:"), std::string::npos) << e;

@@ -269,6 +269,42 @@ TEST(InductionMotorStarter, StarDeltaSwitchesAtASpeed) {
     EXPECT_EQ(r.verdict, "completed") << r.verdictText;
 }
 
+// The switch speed is a located event (StarterSpeedTrigger): the switch is
+// at the crossing, to within the event's 1e-6 s window, not at the first
+// step end past it, whatever the sampling and the integrator's accuracy.
+// Oracle: in star the Kloss torque is a third, T(s)/3 = (2·Mk/3)/(s/sk +
+// sk/s), and J·dω/dt = T/3 from rest integrates in closed form (dω = −ωs·ds):
+//   t(ω) = 3·J·ωs/(2·Mk) · [(1 − s²)/(2·sk) − sk·ln s],   s = 1 − ω/ωs.
+TEST(InductionMotorStarter, StarDeltaSwitchIsLocatedAtTheSwitchSpeed) {
+    const double J = 1.5, ws = 1500 * kRpm, Mk = 2.5 * 97.4, sk = 0.02 * (2.5 + std::sqrt(2.5 * 2.5 - 1));
+    const double v = 60, s = 1 - v / ws;
+    const double tSwitch = 3 * J * ws / (2 * Mk) * ((1 - s * s) / (2 * sk) - sk * std::log(s));
+    const std::string text = "format_version: 1\nname: t\nbodies:\n  - name: shaft\n    inertia: 1.5 kg*m^2\n"
+                             "    joint: {type: pin, parent: ground}\nelements:\n  - type: InductionMotor\n"
+                             "    name: motor\n    body: shaft\n    rated_torque: 97.4 N*m\n    rated_speed: 1470 rpm\n"
+                             "    synchronous_speed: 1500 rpm\n    breakdown_ratio: 2.5\n    starter: star_delta\n"
+                             "    switch_speeds: [60 rad/s]\nscenario:\n  analysis: transient\n  end_time: 8 s\n"
+                             "integrator:\n  name: RungeKuttaMerson\n  accuracy: 1e-9\noutputs:\n  sample_interval: 5 ms\n";
+    for (const char* accuracy : {"1e-6", "1e-9"})
+        for (const char* dt : {"5 ms", "0.37 s"}) {
+            const AnalysisResult r =
+                runAnalysis(readModelText(text, "t.yaml", defaultModelReader(),
+                                          {{"integrator.accuracy", accuracy}, {"outputs.sample_interval", dt}}));
+            const ResultScalar* end = r.find("sequence_end.motor");
+            ASSERT_NE(end, nullptr) << accuracy << " " << dt;
+            // 1e-6 s window, and the crossing instant's integration error
+            // (accuracy·ω / (dω/dt ≈ 16 rad/s²): 4e-6 s at 1e-6).
+            EXPECT_NEAR(end->value, tSwitch, 1e-5) << accuracy << " " << dt;
+            // Every row below the speed is in star, every row above it in
+            // delta (the rows lie within 0.1 rad/s of 60 rad/s only at 5 ms).
+            for (std::size_t i = 0; i < r.rows.size(); ++i) {
+                const double w = r.value(i, "shaft.speed");
+                const double ratio = r.value(i, "motor.torque") / klossByHand((ws - w) / ws);
+                EXPECT_NEAR(ratio, w < v ? 1.0 / 3 : 1.0, 1e-9) << accuracy << " " << dt << " at " << w << " rad/s";
+            }
+        }
+}
+
 
 // The converter's hold slip: where the Kloss torque reaches the limit,
 // s = sk·(Mk/M_lim − √((Mk/M_lim)² − 1)) (the stable root of Kloss = M_lim);
