@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
+#include <complex>
 #include <cmath>
 #include <string>
 #include <thread>
@@ -51,6 +54,46 @@ TEST(CageCircuitFit, DoubleCageMeetsEveryDatasheetPoint) {
     EXPECT_NEAR((rated.torque - d.ratedPower / d.ratedSpeed) / (d.ratedPower / d.ratedSpeed), fit.points[0].residual, 1e-12);
     // The starting cage has the higher resistance.
     EXPECT_GT(fit.circuit.rotorResistances[0], fit.circuit.rotorResistances[1]);
+}
+
+// The circuit's steady state against its mesh equations solved here by LU
+// (stator mesh and one mesh per cage, rotor rows multiplied by the slip, as
+// the dq machine's voltage equations give them at steady state): single and
+// double cage, slips from 1e-4 to 1 and 0, to 1e-12 of each value.
+TEST(CageCircuitFit, SteadyStateIsTheSolutionOfTheMeshEquations) {
+    using C = std::complex<double>;
+    CageCircuit single;
+    single.statorResistance = 0.63, single.statorLeakage = 1.46e-3, single.mainInductance = 0.0513;
+    single.rotorResistances = {0.40}, single.rotorLeakages = {2.1e-3};
+    CageCircuit twin = single;
+    twin.rotorResistances = {0.40, 0.296}, twin.rotorLeakages = {0.80e-3, 5.68e-3};
+    const double V = 230.9, f = 50, w = 2 * M_PI * f;
+    const int p = 2;
+    for (const CageCircuit& c : {single, twin}) {
+        const int n = 1 + static_cast<int>(c.rotorResistances.size());
+        for (double s : {0.0, 1e-4, 3e-3, 0.02, 0.1, 0.35, 1.0}) {
+            Eigen::MatrixXcd Z(n, n);
+            Z(0, 0) = C(c.statorResistance, w * (c.statorLeakage + c.mainInductance));
+            for (int k = 1; k < n; ++k) {
+                Z(0, k) = C(0, w * c.mainInductance);
+                Z(k, 0) = C(0, s * w * c.mainInductance);
+                for (int j = 1; j < n; ++j)
+                    Z(k, j) = j == k ? C(c.rotorResistances[k - 1], s * w * (c.rotorLeakages[k - 1] + c.mainInductance))
+                                     : C(0, s * w * c.mainInductance);
+            }
+            Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(n);
+            rhs(0) = V;
+            const Eigen::VectorXcd I = Z.fullPivLu().solve(rhs);
+            double airGap = 0;
+            for (int k = 1; k < n && s > 0; ++k) airGap += 3 * std::norm(I(k)) * c.rotorResistances[k - 1] / s;
+            const double torque = airGap / (w / p), inputPower = 3 * std::real(V * std::conj(I(0)));
+            const CagePoint got = cageSteadyState(c, V, f, p, s);
+            EXPECT_NEAR(got.current, std::abs(I(0)), 1e-12 * std::abs(I(0))) << n << " meshes, s = " << s;
+            EXPECT_NEAR(got.inputPower, inputPower, 1e-12 * std::abs(inputPower)) << n << " meshes, s = " << s;
+            EXPECT_NEAR(got.torque, torque, 1e-12 * std::max(std::abs(torque), 1e-300)) << n << " meshes, s = " << s;
+            EXPECT_NEAR(got.powerFactor, inputPower / (3 * V * std::abs(I(0))), 1e-12) << n << " meshes, s = " << s;
+        }
+    }
 }
 
 TEST(CageCircuitFit, SingleCageCannotGiveMaAndMkTogether) {
