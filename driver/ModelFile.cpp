@@ -216,6 +216,15 @@ public:
         // The preset's settings first, every other --set after them: an
         // explicit --integrator or --set wins over the preset's choice.
         auto isPresetPath = [](const Override& o) { return o.path == "preset" || o.path.rfind("presets.", 0) == 0; };
+        // The scenario that runs: `use_scenario` as the last --set (--scenario
+        // NAME) or the file gives it. A --set of `scenario.KEY` (--end-time,
+        // --accuracy's scenario keys, a preset's scenario settings) acts on
+        // it: with a named scenario selected, the default `scenario:` is only
+        // checked, and setting it would be silently without effect.
+        for (const auto& o : overrides)
+            if (o.path == "use_scenario") m_selectedScenario = o.value;
+        if (m_selectedScenario.empty() && root["use_scenario"] && root["use_scenario"].IsScalar())
+            m_selectedScenario = root["use_scenario"].Scalar();
         for (const auto& o : overrides)
             if (isPresetPath(o)) applyOverride(root, o);
         ModelSpec spec;
@@ -295,6 +304,16 @@ private:
     const ModelFileReader& m_lookups;
     std::string* m_resolved;  ///< if set: the document after includes, preset and --set
     std::vector<std::pair<YAML::Node, SourceLocation>> m_overridden;  // node, "<--set path>"
+    std::string m_selectedScenario;  // use_scenario's name, empty: the default scenario runs
+
+    /// `scenario` or `scenario.KEY` redirected to `scenarios.NAME[.KEY]` when
+    /// a named scenario runs; every other path as given.
+    std::string runningScenarioPath(const std::string& path) const {
+        if (m_selectedScenario.empty()) return path;
+        if (path == "scenario") return "scenarios." + m_selectedScenario;
+        if (path.rfind("scenario.", 0) == 0) return "scenarios." + m_selectedScenario + path.substr(8);
+        return path;
+    }
     mutable std::vector<std::string> m_readNotes;  // ModelSpec::readNotes
 
     /// A body's or element's name: its outputs' column prefix and the
@@ -646,7 +665,7 @@ private:
             const std::string path = scalar(it->first, "presets." + name + ".set");
             const YAML::Node value = it->second;
             scalar(value, "presets." + name + ".set." + path);
-            setValue(root, path, &value, "", where(value));
+            setValue(root, runningScenarioPath(path), &value, "", where(value));
         }
         spec.preset = name;
         spec.presetWhy = chosen["why"].Scalar();
@@ -1231,7 +1250,7 @@ private:
             throw SpecError(at, o.path, "includes are resolved before --set applies: change the file, or --set the "
                                         "included values by their names");
         const std::size_t before = m_overridden.size();
-        setValue(root, o.path, nullptr, o.value, at);
+        setValue(root, runningScenarioPath(o.path), nullptr, o.value, at);
         // A number given as SI (Override::bareNumberIsSI) is marked so that
         // readNumber takes it without a unit.
         if (o.bareNumberIsSI)

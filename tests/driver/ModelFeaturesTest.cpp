@@ -425,6 +425,27 @@ TEST(ModelFeaturesScenarios, EveryNamedScenarioIsCheckedEvenWhenNotSelected) {
                 "scenario.end_time", "must be > 0 s");
 }
 
+TEST(ModelFeaturesScenarios, SetOfTheScenarioActsOnTheNamedScenarioThatRuns) {
+    // `--scenario run --end-time 0.5` (use_scenario=run, scenario.end_time):
+    // the override reaches the scenario that runs, not the default one,
+    // whose values would have been silently without effect.
+    const ModelSpec run = read(kScenarios, {{"use_scenario", "run"}, {"scenario.end_time", "0.5 s"}});
+    EXPECT_EQ(run.scenario.type, "transient");
+    EXPECT_DOUBLE_EQ(run.scenario.number("end_time"), 0.5);
+    EXPECT_EQ(run.scenario.whereOf("end_time").file, "<--set scenario.end_time>");
+    // use_scenario from the file: the same.
+    EXPECT_DOUBLE_EQ(read(kScenarios, {{"scenario.end_time", "0.25 s"}}).scenario.number("end_time"), 0.25);
+    // A key the named scenario does not write yet is added to it, and a bad
+    // value is refused naming the user's path.
+    EXPECT_EQ(read(kScenarios, {{"scenario.max_step", "1 ms"}}).scenario.number("max_step"), 1e-3);
+    expectError(readError(kScenarios, {{"scenario.end_time", "-1 s"}}), "<--set scenario.end_time>", 1, 1,
+                "scenarios.run.end_time", "must be > 0 s");
+    // With the default scenario running, scenario.KEY is that scenario's.
+    const std::string text =
+        replaced(kScenarios, "use_scenario: run\n", "scenario:\n  analysis: transient\n  end_time: 5 s\n");
+    EXPECT_DOUBLE_EQ(read(text, {{"scenario.end_time", "3 s"}}).scenario.number("end_time"), 3.0);
+}
+
 TEST(ModelFeaturesScenarios, UnknownUseScenarioSuggestsTheNearestName) {
     expectError(readError(replaced(kScenarios, "use_scenario: run", "use_scenario: rn")), 19, 15, "use_scenario",
                 "no scenario named 'rn' under scenarios: (did you mean 'run'?)");
