@@ -2,6 +2,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/Units.h"
+#include "driver/analyses/AnalysisRegistry.h"
 #include "driver/outputs/AtomicFile.h"
 
 #include <chrono>
@@ -92,18 +93,9 @@ ModelInfo describeModel(const ModelSpec& spec) {
     for (const auto& n : scene->notes()) info.built.push_back({n.what, n.why});
     info.notBuilt = spec.notBuilt;
     for (const auto& n : scene->omitted()) info.notBuilt.push_back({n.what, n.why});
-    if (spec.scenario.type == "transient") {
-        const std::string why = whyNoReplay(*scene, initialState(*scene, spec));
-        info.timeIntegration = spec.scenario.text("zero_dof") == "integrate" ? "integrated (zero_dof: integrate)"
-                               : why.empty() ? "none: no free degrees of freedom, the run is replayed at the samples"
-                                             : why;
-    } else if (spec.scenario.type == "coastdown_identify") {
-        info.timeIntegration = "integrated (run-outs after a switch-off)";
-    } else if (spec.scenario.type == "frequency_response") {
-        info.timeIntegration = "only the optional time-domain check of the linear response";
-    } else {
-        info.timeIntegration = "none (" + spec.scenario.type + " analysis)";
-    }
+    const AnalysisKind* kind = findAnalysisKind(spec.scenario.type);
+    info.timeIntegration = kind && kind->timeIntegration ? kind->timeIntegration(spec, *scene)
+                                                         : "none (" + spec.scenario.type + " analysis)";
     for (const auto& p : scene->probes()) info.outputs.push_back({p.name, p.unit});
     info.contributions = scene->elementRecords();
     const std::string noGravity = gravityWarning(spec, defaultModelReader());

@@ -312,7 +312,7 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
         }
         if (!sceneHasSketches(*buildScene(spec)))
             throw UsageError("--schematic: nothing to draw in " + a.model +
-                             " (no element of it draws itself; GearMesh, SegmentCharge, BeltDrive and JointReaction do)");
+                             " (no element of it draws itself; docs/schematic.md lists those that do)");
         observer = [&](const Scene& scene, const SimTK::State& s, double key) { recorder->observe(scene, s, key); };
     }
     const RunOutcome run = runModel(spec, progress, observer);

@@ -3,6 +3,7 @@
 #include "driver/ReducedInertia.h"
 #include "driver/Simulation.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/AnalysisRegistry.h"
 
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/EnergyMeter.h"
@@ -180,7 +181,7 @@ std::unique_ptr<Scene> buildScene(const ModelSpec& spec) {
     const std::string& analysis = spec.scenario.type;
     if (!spec.outputs.energyBalance) {
         scene->omit("energy meter", "outputs.energy_balance is false");
-    } else if (analysis == "transient" || analysis == "coastdown_identify") {
+    } else if (const AnalysisKind* kind = findAnalysisKind(analysis); kind && kind->reportsEnergyBalance) {
         // Last, so that it sees every element's energy flow.
         auto* meter = new EnergyMeter(scene->forces(), scene->energyFlows(), flowTypes);
         SimTK::Force::Custom meterForce(scene->forces(), meter);

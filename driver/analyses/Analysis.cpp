@@ -2,6 +2,7 @@
 
 #include "driver/ModelFile.h"
 #include "driver/SceneBuilder.h"
+#include "driver/analyses/AnalysisRegistry.h"
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/EnergyMeter.h"
 #include "plugins/scene/Format.h"
@@ -38,9 +39,6 @@ double AnalysisResult::value(std::size_t row, const std::string& name) const {
     return rows.at(row)[c];
 }
 
-namespace {
-
-/// Shared by the analyses that detect a shaft coming to rest.
 ParamSchema stopSpeedParam() {
     return ParamSchema::quantity("stop_speed", "rad/s",
                                  "standstill is detected at this speed and extrapolated to zero; keep it above "
@@ -48,189 +46,6 @@ ParamSchema stopSpeedParam() {
         .optional(0.1)
         .above(0);
 }
-
-std::map<std::string, ElementSchema> makeAnalysisSchemas() {
-    using P = ParamSchema;
-    std::map<std::string, ElementSchema> schemas;
-
-    ElementSchema transient;
-    transient.type = "transient";
-    transient.doc = "Time simulation: start, steady running, switch-off and run-out.";
-    transient.params = {
-        P::quantity("end_time", "s", "simulated time").above(0).atMost(1e6),
-        P::choice("initial_state", {"rest", "steady", "file"},
-                  "rest: all speeds 0; steady: solved steady running; file: the bodies' initial_* keys")
-            .optional("rest"),
-        P::body("speed_body", "body whose speed the summary reports (default: the first)").optional(""),
-        P::body("runout_body", "body whose first stop after switch-off ends the run-out").optional(""),
-        stopSpeedParam(),
-        P::choice("zero_dof", {"replay", "integrate"},
-                  "a scene without free degrees of freedom (every mobility prescribed or constrained): "
-                  "replay: placed at each sample from the drives' time laws, no integration; "
-                  "integrate: integrated like any other")
-            .optional("replay"),
-        P::quantity("start_tolerance", "1",
-                    "start verdict: the speed is held when it stays within this fraction of the drive's "
-                    "rated speed (referred to speed_body) of its final value")
-            .optional(0.02).above(0).atMost(0.5),
-        P::quantity("hold_time", "s", "start verdict: how long the speed must be held (0: a tenth of the "
-                                      "time before switch-off)")
-            .optional(0.0).atLeast(0),
-        P::quantity("stall_fraction", "1", "start verdict: a speed held below this fraction of the rated speed "
-                                           "(referred to speed_body) is a stall")
-            .optional(0.8).above(0).below(1),
-    };
-    schemas["transient"] = transient;
-
-    ElementSchema identify;
-    identify.type = "coastdown_identify";
-    identify.doc = "Finds the constant resistance torque that makes the simulated run-out after "
-                   "switch-off last a measured time (root-finding on simulations).";
-    identify.params = {
-        P::quantity("runout_time", "s", "measured run-out time t_v").above(0).atMost(1e4),
-        P::text("resistance", "name of the element whose constant resistance torque is identified (of a type that "
-                                  "declares one adjustable; milldyn elements lists them)"),
-        P::body("runout_body", "body whose run-out is measured (the millstone)"),
-        P::choice("runout_measure", {"body_stop", "mean_speed"},
-                  "body_stop: first stop of runout_body; mean_speed: zero of the momentum-weighted "
-                  "mean speed (the paper's mean line, eq 12)")
-            .optional("body_stop"),
-        P::quantity("idle_runout_time", "s", "run-out time without feed, for M_zh (0: none)")
-            .optional(0.0).atLeast(0),
-        P::quantity("belt_ratio", "1", "u_p: M_zh = (Mc − Mc,idle)·u_p").optional(1.0).above(0),
-        P::body("speed_body", "body whose steady speed is reported (default: the first)").optional(""),
-        P::quantity("tolerance", "1", "relative tolerance on the identified torque")
-            .optional(1e-10).above(0).atMost(1e-2),
-        stopSpeedParam(),
-    };
-    schemas["coastdown_identify"] = identify;
-
-    ElementSchema linearize;
-    linearize.type = "linearize";
-    linearize.doc = "Mass, damping and stiffness matrices about steady running (numerical Jacobians), "
-                    "eigenvalues, natural frequencies and mode shapes.";
-    linearize.params = {
-        P::choice("operating_point", {"steady", "file"},
-                  "steady: solved steady running about the mean load; file: the bodies' initial_* keys")
-            .optional("steady"),
-        P::body("reference_shaft", "mode shapes referred to this shaft: amplitudes times the speed ratio to it "
-                                   "(default: each body's own angle)")
-            .optional(""),
-        P::choice("motor_model", {"dq_states", "frozen_flux", "static_slope"},
-                  "how DqInductionMotor fluxes enter the linear model: dq_states (their flux states, electrical "
-                  "damping), frozen_flux (held: no electrical damping), static_slope (the steady torque-speed "
-                  "slope); InductionMotor is its static slope in all three")
-            .optional("dq_states"),
-    };
-    schemas["linearize"] = linearize;
-
-    ElementSchema statics;
-    statics.type = "static_deflection";
-    statics.doc = "Equilibrium at rest under the constant loads (gravity): every probe there and the "
-                  "deflection line of a FlexibleRotor (Newton on the accelerations); with spin_speed, the "
-                  "steady state of a rotor turning at that speed (a synchronous whirl under unbalance).";
-    statics.params = {
-        P::quantity("spin_speed", "rad/s", "speed held on spin_body (0: at rest); loads must then turn with "
-                                           "the rotor (unbalance), not stand still (no gravity)")
-            .optional(0.0),
-        P::body("spin_body", "pin whose speed is held (default: the first body)").optional(""),
-    };
-    schemas["static_deflection"] = statics;
-
-    ElementSchema response;
-    response.type = "frequency_response";
-    response.doc = "Steady-state amplitude and phase of every coupling torque under one harmonic of a "
-                   "periodic load (PeriodicLoad, AngleLoad: any load that declares its harmonics), from the "
-                   "linear model, over a frequency range; optionally checked by time simulation at chosen "
-                   "frequencies (a time-based load only).";
-    response.params = {
-        P::text("load", "name of the periodic load whose pattern over its rows or shafts is the forcing"),
-        P::quantity("harmonic", "1", "harmonic k of the load (row phases k·φ_r; an AngleLoad's cycle harmonic k)")
-            .optional(1.0).above(0)
-            .atMost(1000),
-        P::quantity("frequency_min", "rad/s", "lowest forcing frequency").above(0),
-        P::quantity("frequency_max", "rad/s", "highest forcing frequency").above(0),
-        P::quantity("points", "1", "frequencies, log-spaced").optional(200.0).atLeast(2).atMost(100000),
-        P::quantityList("check_frequencies", "rad/s", 0, 20,
-                        "frequencies at which a time simulation checks the linear response")
-            .optional(0.0)
-            .above(0),
-        P::quantity("check_periods", "1", "forcing periods fitted in each time check").optional(20.0).atLeast(1),
-        P::quantity("settle_time", "s", "time for transients to decay before fitting (0: from the slowest "
-                                         "eigenvalue)").optional(0.0).atLeast(0),
-        P::choice("motor_model", {"dq_states", "frozen_flux", "static_slope"},
-                  "how DqInductionMotor fluxes enter the linear model: dq_states (their flux states, electrical "
-                  "damping), frozen_flux (held: no electrical damping), static_slope (the steady torque-speed "
-                  "slope); InductionMotor is its static slope in all three")
-            .optional("dq_states"),
-    };
-    response.crossCheck = [](const ElementSpec& e) {
-        if (e.number("frequency_max") <= e.number("frequency_min"))
-            throw e.error("frequency_max", "must exceed frequency_min");
-        if (e.number("harmonic") != std::floor(e.number("harmonic")))
-            throw e.error("harmonic", "must be a whole number");
-    };
-    schemas["frequency_response"] = response;
-
-    ElementSchema kin;
-    kin.type = "kinetostatic";
-    kin.doc = "Loads at prescribed carrier angles: one realization each, no time integration.";
-    kin.params = {
-        P::body("carrier", "body whose angle is swept (default: the first)").optional(""),
-        P::quantity("angle_from", "rad", "first carrier angle").optional(0.0),
-        P::quantity("angle_to", "rad", "last carrier angle").optional(2 * M_PI),
-        P::quantity("angle_points", "1", "angles, evenly spaced, both ends included").optional(37.0).atLeast(1).atMost(
-            100000),
-        P::quantity("carrier_speed", "rad/s", "carrier speed ω1").optional(0.0),
-        P::quantity("time", "s", "instant of the drive laws (ε(t) of a CarrierDrive)").optional(0.0).atLeast(0),
-        P::quantity("tolerance", "1", "relative tolerance of wall torques and journal reactions")
-            .optional(1e-12)
-            .above(0)
-            .below(1),
-    };
-    schemas["kinetostatic"] = kin;
-
-    ElementSchema map;
-    map.type = "resonance_map";
-    map.doc = "Dynamic factor of every coupling torque against rotor speed, the load harmonics following "
-              "the speed; bands above a threshold are reported as speeds to avoid.";
-    map.params = {
-        P::text("load", "name of the periodic load (PeriodicLoad, AngleLoad; none: gear-mesh frequencies only)")
-            .optional(std::string("")),
-        P::text("rotor", "body whose speed is swept when there is no load").optional(std::string("")),
-        P::quantity("speed_min", "rad/s", "lowest rotor speed").above(0),
-        P::quantity("speed_max", "rad/s", "highest rotor speed").above(0),
-        P::quantity("points", "1", "speeds, evenly spaced").optional(600.0).atLeast(2).atMost(100000),
-        P::quantity("load_events_per_revolution", "1",
-                    "z: P_1 = z·Ω (teeth per sprocket row); a time-based load only (an AngleLoad's orders are "
-                    "its own)").optional(0.0)
-            .above(0),
-        P::quantity("threshold", "1", "dynamic factor above which a speed band is to be avoided")
-            .optional(1.3).above(0),
-        P::choice("motor_model", {"dq_states", "frozen_flux", "static_slope"},
-                  "how DqInductionMotor fluxes enter the linear model: dq_states (their flux states, electrical "
-                  "damping), frozen_flux (held: no electrical damping), static_slope (the steady torque-speed "
-                  "slope); InductionMotor is its static slope in all three")
-            .optional("dq_states"),
-    };
-    map.crossCheck = [](const ElementSpec& e) {
-        if (e.number("speed_max") <= e.number("speed_min")) throw e.error("speed_max", "must exceed speed_min");
-        if (!e.has("load") && e.has("load_events_per_revolution"))
-            throw e.error("load_events_per_revolution", "not used without a load");
-        if (!e.has("load") && !e.has("rotor"))
-            throw e.error("load", "give a periodic load (load) or, for gear-mesh frequencies only, the rotor body (rotor)");
-        if (e.has("load") && e.has("rotor")) throw e.error("rotor", "not used with a load (the load's body is the rotor)");
-    };
-    schemas["resonance_map"] = map;
-    return schemas;
-}
-
-const std::map<std::string, ElementSchema>& analysisSchemas() {
-    static const std::map<std::string, ElementSchema> schemas = makeAnalysisSchemas();
-    return schemas;
-}
-
-}  // namespace
 
 ElementSpec defaultScenario(const std::string& kind) {
     const ElementSchema* schema = findAnalysisSchema(kind);
@@ -245,18 +60,6 @@ ElementSpec defaultScenario(const std::string& kind) {
         s.params[p.key] = v;
     }
     return s;
-}
-
-const ElementSchema* findAnalysisSchema(const std::string& kind) {
-    const auto& all = analysisSchemas();
-    auto it = all.find(kind);
-    return it == all.end() ? nullptr : &it->second;
-}
-
-std::vector<std::string> analysisKinds() {
-    std::vector<std::string> kinds;
-    for (const auto& kv : analysisSchemas()) kinds.push_back(kv.first);
-    return kinds;
 }
 
 ModelFileReader defaultModelReader() {
@@ -281,38 +84,33 @@ AnalysisResult runModelFile(const std::string& path, const std::vector<Override>
 namespace {
 
 AnalysisResult dispatchAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
+    const std::string& analysis = spec.scenario.type;
+    const AnalysisKind* kind = findAnalysisKind(analysis);
+    if (!kind) throw AnalysisError("analysis '" + analysis + "' is not implemented");
     // What an element's setting needs of the analysis (a condition of each
     // instant, a history along a run; its schema's analysisNeeds), and
     // keys that set the state at t = 0: the transient checks its own
     // (replayed or integrated) once its scene is built.
-    const std::string& analysis = spec.scenario.type;
     for (const auto& e : spec.elements) {
         const ElementSchema* s = schemaOf(e);
         if (!s) continue;
         for (const auto& need : s->analysisNeeds) {
             if (!need.matches(e)) continue;
             using Kind = ElementSchema::AnalysisNeed::Kind;
-            if (need.kind == Kind::EachInstant && analysis != "kinetostatic" && analysis != "transient")
+            if (need.kind == Kind::EachInstant && !kind->solvesEachInstant)
                 throw e.error(need.key, need.value + ": " + need.why + " (a kinetostatic model): analysis '" +
                                             analysis + "' cannot solve it; use " + need.alternative);
-            if (need.kind == Kind::StepHistory && analysis != "transient")
+            if (need.kind == Kind::StepHistory && !kind->carriesStepHistory)
                 throw e.error(need.key, need.value + ": " + need.why + ": analysis '" + analysis +
                                             "' has no run to carry it along (transient only); use " +
                                             need.alternative);
         }
         for (const auto& [key, what] : s->initialStateKeys)
             if (e.params.count(key) && e.params.at(key).given &&
-                !(analysis == "transient" && spec.scenario.text("initial_state") == "file"))
+                !(kind->keepsInitialState && kind->keepsInitialState(spec.scenario)))
                 throw e.error(key, "sets " + what + " at t = 0, which only a transient with initial_state: file keeps");
     }
-    if (spec.scenario.type == "transient") return runTransient(spec, progress, observer);
-    if (spec.scenario.type == "coastdown_identify") return runCoastdownIdentify(spec, progress);
-    if (spec.scenario.type == "linearize") return runLinearize(spec, progress);
-    if (spec.scenario.type == "kinetostatic") return runKinetostatic(spec, progress, observer);
-    if (spec.scenario.type == "static_deflection") return runStaticDeflection(spec, progress);
-    if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
-    if (spec.scenario.type == "resonance_map") return runResonanceMap(spec, progress);
-    throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");
+    return kind->run(spec, progress, observer);
 }
 
 }  // namespace

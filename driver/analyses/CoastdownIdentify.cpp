@@ -10,6 +10,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/AnalysisRegistry.h"
 #include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/Format.h"
 
@@ -380,6 +381,38 @@ AnalysisResult runCoastdownIdentify(const ModelSpec& spec, const ProgressFn& pro
     addDefaultPlots(result);
     if (progress) progress(1, 1);
     return result;
+}
+
+AnalysisKind coastdownIdentifyKind() {
+    using P = ParamSchema;
+    AnalysisKind kind;
+    ElementSchema& identify = kind.schema;
+    identify.type = "coastdown_identify";
+    identify.doc = "Finds the constant resistance torque that makes the simulated run-out after "
+                   "switch-off last a measured time (root-finding on simulations).";
+    identify.params = {
+        P::quantity("runout_time", "s", "measured run-out time t_v").above(0).atMost(1e4),
+        P::text("resistance", "name of the element whose constant resistance torque is identified (of a type that "
+                                  "declares one adjustable; milldyn elements lists them)"),
+        P::body("runout_body", "body whose run-out is measured (the millstone)"),
+        P::choice("runout_measure", {"body_stop", "mean_speed"},
+                  "body_stop: first stop of runout_body; mean_speed: zero of the momentum-weighted "
+                  "mean speed (the paper's mean line, eq 12)")
+            .optional("body_stop"),
+        P::quantity("idle_runout_time", "s", "run-out time without feed, for M_zh (0: none)")
+            .optional(0.0).atLeast(0),
+        P::quantity("belt_ratio", "1", "u_p: M_zh = (Mc − Mc,idle)·u_p").optional(1.0).above(0),
+        P::body("speed_body", "body whose steady speed is reported (default: the first)").optional(""),
+        P::quantity("tolerance", "1", "relative tolerance on the identified torque")
+            .optional(1e-10).above(0).atMost(1e-2),
+        stopSpeedParam(),
+    };
+    kind.run = [](const ModelSpec& spec, const ProgressFn& progress, const SampleObserver&) {
+        return runCoastdownIdentify(spec, progress);
+    };
+    kind.timeIntegration = [](const ModelSpec&, const Scene&) { return std::string("integrated (run-outs after a switch-off)"); };
+    kind.reportsEnergyBalance = true;
+    return kind;
 }
 
 }  // namespace milldyn

@@ -8,6 +8,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/AnalysisRegistry.h"
 #include "driver/analyses/LinearModel.h"
 #include "driver/analyses/LoadResponse.h"
 
@@ -330,6 +331,47 @@ AnalysisResult runFrequencyResponse(const ModelSpec& spec, const ProgressFn& pro
     result.notes.push_back("harmonic " + std::to_string(k) + " of " + sc.text("load") + ", " +
                            load.forcingDescription());
     return result;
+}
+
+AnalysisKind frequencyResponseKind() {
+    using P = ParamSchema;
+    AnalysisKind kind;
+    ElementSchema& response = kind.schema;
+    response.type = "frequency_response";
+    response.doc = "Steady-state amplitude and phase of every coupling torque under one harmonic of a "
+                   "periodic load (PeriodicLoad, AngleLoad: any load that declares its harmonics), from the "
+                   "linear model, over a frequency range; optionally checked by time simulation at chosen "
+                   "frequencies (a time-based load only).";
+    response.params = {
+        P::text("load", "name of the periodic load whose pattern over its rows or shafts is the forcing"),
+        P::quantity("harmonic", "1", "harmonic k of the load (row phases k·φ_r; an AngleLoad's cycle harmonic k)")
+            .optional(1.0).above(0)
+            .atMost(1000),
+        P::quantity("frequency_min", "rad/s", "lowest forcing frequency").above(0),
+        P::quantity("frequency_max", "rad/s", "highest forcing frequency").above(0),
+        P::quantity("points", "1", "frequencies, log-spaced").optional(200.0).atLeast(2).atMost(100000),
+        P::quantityList("check_frequencies", "rad/s", 0, 20,
+                        "frequencies at which a time simulation checks the linear response")
+            .optional(0.0)
+            .above(0),
+        P::quantity("check_periods", "1", "forcing periods fitted in each time check").optional(20.0).atLeast(1),
+        P::quantity("settle_time", "s", "time for transients to decay before fitting (0: from the slowest "
+                                         "eigenvalue)").optional(0.0).atLeast(0),
+        motorModelParam(),
+    };
+    response.crossCheck = [](const ElementSpec& e) {
+        if (e.number("frequency_max") <= e.number("frequency_min"))
+            throw e.error("frequency_max", "must exceed frequency_min");
+        if (e.number("harmonic") != std::floor(e.number("harmonic")))
+            throw e.error("harmonic", "must be a whole number");
+    };
+    kind.run = [](const ModelSpec& spec, const ProgressFn& progress, const SampleObserver&) {
+        return runFrequencyResponse(spec, progress);
+    };
+    kind.timeIntegration = [](const ModelSpec&, const Scene&) {
+        return std::string("only the optional time-domain check of the linear response");
+    };
+    return kind;
 }
 
 }  // namespace milldyn

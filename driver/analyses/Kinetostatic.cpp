@@ -8,6 +8,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/AnalysisRegistry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -119,6 +120,43 @@ AnalysisResult runKinetostatic(const ModelSpec& spec, const ProgressFn& progress
                            std::to_string(sc.number("time")) + " s of the drive law; " +
                            std::to_string(points) + " angles, no time integration");
     return result;
+}
+
+AnalysisKind kinetostaticKind() {
+    using P = ParamSchema;
+    AnalysisKind kind;
+    ElementSchema& kin = kind.schema;
+    kin.type = "kinetostatic";
+    kin.doc = "Loads at prescribed carrier angles: one realization each, no time integration.";
+    kin.params = {
+        P::body("carrier", "body whose angle is swept (default: the first)").optional(""),
+        P::quantity("angle_from", "rad", "first carrier angle").optional(0.0),
+        P::quantity("angle_to", "rad", "last carrier angle").optional(2 * M_PI),
+        P::quantity("angle_points", "1", "angles, evenly spaced, both ends included").optional(37.0).atLeast(1).atMost(
+            100000),
+        P::quantity("carrier_speed", "rad/s", "carrier speed ω1").optional(0.0),
+        P::quantity("time", "s", "instant of the drive laws (ε(t) of a CarrierDrive)").optional(0.0).atLeast(0),
+        P::quantity("tolerance", "1", "relative tolerance of wall torques and journal reactions")
+            .optional(1e-12)
+            .above(0)
+            .below(1),
+    };
+    kind.run = runKinetostatic;
+    kind.solvesEachInstant = true;
+    // The carrier angles swept: the pictures' default angles are the first
+    // and three more a quarter of the range apart (one with one angle).
+    kind.schematicSpan = [](const ElementSpec& sc) {
+        SchematicSpan span;
+        span.angles = true;
+        const double first = sc.number("angle_from"), last = sc.number("angle_to");
+        span.from = std::min(first, last);
+        span.to = std::max(first, last);
+        if (sc.number("angle_points") <= 1) span.defaults = {first};
+        else
+            for (int k = 0; k < 4; ++k) span.defaults.push_back(first + (last - first) * k / 4);
+        return span;
+    };
+    return kind;
 }
 
 }  // namespace milldyn

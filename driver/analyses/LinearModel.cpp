@@ -2,8 +2,8 @@
 
 #include "driver/Simulation.h"
 #include "driver/analyses/Analysis.h"
-#include "plugins/motors/DqInductionMotor.h"
-#include "plugins/motors/InductionMotor.h"
+#include "driver/analyses/AnalysisRegistry.h"
+#include "plugins/scene/DriveCapabilities.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,15 +29,12 @@ void calcUndampedModes(LinearModel& lm) {
     }
 }
 
+// The drives with electrical states of their own (ElectricalStates: a
+// DqInductionMotor's fluxes), in build order.
 std::vector<std::string> dqMachineNames(const Scene& scene) {
-    // Every drive declares a DriveTorque probe "NAME.torque".
     std::vector<std::string> names;
-    for (const auto& p : scene.probes()) {
-        if (p.role != ProbeRole::DriveTorque || p.name.size() < 7) continue;
-        const std::string name = p.name.substr(0, p.name.size() - 7);
-        if (p.name.compare(name.size(), 7, ".torque") == 0 && scene.findElement<DqInductionMotor>(name))
-            names.push_back(name);
-    }
+    for (const Scene::Drive& d : scene.drives())
+        if (scene.findElement<ElectricalStates>(d.element)) names.push_back(d.element);
     return names;
 }
 
@@ -163,6 +160,14 @@ MotorModel motorModelFromName(const std::string& word) {
     throw AnalysisError("motor_model: '" + word + "' is not one of dq_states, frozen_flux, static_slope");
 }
 
+ParamSchema motorModelParam() {
+    return ParamSchema::choice("motor_model", {"dq_states", "frozen_flux", "static_slope"},
+                               "how DqInductionMotor fluxes enter the linear model: dq_states (their flux states, "
+                               "electrical damping), frozen_flux (held: no electrical damping), static_slope (the "
+                               "steady torque-speed slope); InductionMotor is its static slope in all three")
+        .optional("dq_states");
+}
+
 LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoint, bool withModes,
                            bool reduceConstraints, MotorModel motorModel) {
     const SimTK::System& system = scene.system();
@@ -199,15 +204,13 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     std::vector<int> zIndex;
     std::vector<double> zFrame;
     for (const std::string& name : dqMachineNames(scene)) {
-        const DqInductionMotor* dq = scene.findElement<DqInductionMotor>(name);
+        const ElectricalStates* dq = scene.findElement<ElectricalStates>(name);
         system.realize(x0, SimTK::Stage::Acceleration);
-        const int first = dq->firstFluxIndex(x0);
-        static const char* const kFlux[] = {".psi_s_alpha", ".psi_s_beta", ".psi_r1_alpha", ".psi_r1_beta",
-                                            ".psi_r2_alpha", ".psi_r2_beta"};
-        for (int k = 0; k < dq->fluxStateCount(); ++k) {
+        const int first = dq->firstElectricalState(x0);
+        for (int k = 0; k < dq->electricalStateCount(); ++k) {
             zIndex.push_back(first + k);
-            zFrame.push_back(2 * M_PI * dq->params().frequency);
-            lm.stateNames.push_back(name + kFlux[k]);
+            zFrame.push_back(dq->electricalFrameSpeed());
+            lm.stateNames.push_back(name + "." + dq->electricalStateName(k));
         }
     }
     const int nz = static_cast<int>(zIndex.size());
@@ -434,12 +437,9 @@ DataTable modeDampingTable(const LinearModel& lm) {
 std::vector<std::string> motorDampingNotes(const Scene& scene, const LinearModel& lm) {
     std::vector<std::string> notes;
     std::vector<std::string> dq = dqMachineNames(scene), statics;
-    for (const auto& p : scene.probes()) {
-        if (p.role != ProbeRole::DriveTorque || p.name.size() < 7) continue;
-        const std::string name = p.name.substr(0, p.name.size() - 7);
-        if (std::find(dq.begin(), dq.end(), name) == dq.end() && scene.findElement<InductionMotor>(name))
-            statics.push_back(name);
-    }
+    for (const Scene::Drive& d : scene.drives())
+        if (std::find(dq.begin(), dq.end(), d.element) == dq.end() && scene.findElement<StaticTorqueSpeedCurve>(d.element))
+            statics.push_back(d.element);
     if (dq.empty() && statics.empty()) return notes;
     auto list = [](const std::vector<std::string>& names) {
         std::string out;
@@ -456,9 +456,15 @@ std::vector<std::string> motorDampingNotes(const Scene& scene, const LinearModel
                                                                        : " as their steady torque-speed slope at the "
                                                                          "operating point (fluxes at steady state)");
     }
-    if (!statics.empty())
-        which += (dq.empty() ? "" : "; ") + list(statics) +
-                 " (InductionMotor) as the static torque-speed slope at the operating point, in every motor model";
+    if (!statics.empty()) {
+        std::vector<std::string> types;  // of the static-curve drives, as the scene built them
+        for (const ElementRecord& r : scene.elementRecords())
+            if (std::find(statics.begin(), statics.end(), r.element) != statics.end() &&
+                std::find(types.begin(), types.end(), r.type) == types.end())
+                types.push_back(r.type);
+        which += (dq.empty() ? "" : "; ") + list(statics) + " (" + list(types) +
+                 ") as the static torque-speed slope at the operating point, in every motor model";
+    }
     notes.push_back(which);
     if (dq.empty()) return notes;
     const DataTable t = modeDampingTable(lm);

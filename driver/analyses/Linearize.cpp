@@ -3,6 +3,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/AnalysisRegistry.h"
 #include "driver/analyses/LinearModel.h"
 
 #include <cmath>
@@ -198,6 +199,28 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
                            scene->bodies().front().name + " " +
                            std::to_string(pinSpeed(state, scene->bodies().front().mobod)) + " rad/s");
     return result;
+}
+
+AnalysisKind linearizeKind() {
+    using P = ParamSchema;
+    AnalysisKind kind;
+    ElementSchema& linearize = kind.schema;
+    linearize.type = "linearize";
+    linearize.doc = "Mass, damping and stiffness matrices about steady running (numerical Jacobians), "
+                    "eigenvalues, natural frequencies and mode shapes.";
+    linearize.params = {
+        P::choice("operating_point", {"steady", "file"},
+                  "steady: solved steady running about the mean load; file: the bodies' initial_* keys")
+            .optional("steady"),
+        P::body("reference_shaft", "mode shapes referred to this shaft: amplitudes times the speed ratio to it "
+                                   "(default: each body's own angle)")
+            .optional(""),
+        motorModelParam(),
+    };
+    kind.run = [](const ModelSpec& spec, const ProgressFn& progress, const SampleObserver&) {
+        return runLinearize(spec, progress);
+    };
+    return kind;
 }
 
 }  // namespace milldyn

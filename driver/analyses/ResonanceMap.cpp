@@ -14,6 +14,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/AnalysisRegistry.h"
 #include "driver/analyses/LinearModel.h"
 #include "driver/analyses/LoadResponse.h"
 
@@ -258,6 +259,42 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
     for (std::size_t o = 0; o < outputs.size(); ++o) cols.push_back(2 + o);
     result.plots.push_back({"resonance_map", cols});
     return result;
+}
+
+AnalysisKind resonanceMapKind() {
+    using P = ParamSchema;
+    AnalysisKind kind;
+    ElementSchema& map = kind.schema;
+    map.type = "resonance_map";
+    map.doc = "Dynamic factor of every coupling torque against rotor speed, the load harmonics following "
+              "the speed; bands above a threshold are reported as speeds to avoid.";
+    map.params = {
+        P::text("load", "name of the periodic load (PeriodicLoad, AngleLoad; none: gear-mesh frequencies only)")
+            .optional(std::string("")),
+        P::text("rotor", "body whose speed is swept when there is no load").optional(std::string("")),
+        P::quantity("speed_min", "rad/s", "lowest rotor speed").above(0),
+        P::quantity("speed_max", "rad/s", "highest rotor speed").above(0),
+        P::quantity("points", "1", "speeds, evenly spaced").optional(600.0).atLeast(2).atMost(100000),
+        P::quantity("load_events_per_revolution", "1",
+                    "z: P_1 = z·Ω (teeth per sprocket row); a time-based load only (an AngleLoad's orders are "
+                    "its own)").optional(0.0)
+            .above(0),
+        P::quantity("threshold", "1", "dynamic factor above which a speed band is to be avoided")
+            .optional(1.3).above(0),
+        motorModelParam(),
+    };
+    map.crossCheck = [](const ElementSpec& e) {
+        if (e.number("speed_max") <= e.number("speed_min")) throw e.error("speed_max", "must exceed speed_min");
+        if (!e.has("load") && e.has("load_events_per_revolution"))
+            throw e.error("load_events_per_revolution", "not used without a load");
+        if (!e.has("load") && !e.has("rotor"))
+            throw e.error("load", "give a periodic load (load) or, for gear-mesh frequencies only, the rotor body (rotor)");
+        if (e.has("load") && e.has("rotor")) throw e.error("rotor", "not used with a load (the load's body is the rotor)");
+    };
+    kind.run = [](const ModelSpec& spec, const ProgressFn& progress, const SampleObserver&) {
+        return runResonanceMap(spec, progress);
+    };
+    return kind;
 }
 
 }  // namespace milldyn

@@ -4,6 +4,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/AnalysisRegistry.h"
 #include "driver/analyses/LinearModel.h"
 #include "plugins/shafts/FlexibleRotor.h"
 
@@ -116,6 +117,26 @@ AnalysisResult runStaticDeflection(const ModelSpec& spec, const ProgressFn&) {
          << " after " << iterations + 1 << " Newton step(s), last step " << step;
     result.notes.push_back(note.str());
     return result;
+}
+
+AnalysisKind staticDeflectionKind() {
+    using P = ParamSchema;
+    AnalysisKind kind;
+    ElementSchema& statics = kind.schema;
+    statics.type = "static_deflection";
+    statics.doc = "Equilibrium at rest under the constant loads (gravity): every probe there and the "
+                  "deflection line of a FlexibleRotor (Newton on the accelerations); with spin_speed, the "
+                  "steady state of a rotor turning at that speed (a synchronous whirl under unbalance).";
+    statics.params = {
+        P::quantity("spin_speed", "rad/s", "speed held on spin_body (0: at rest); loads must then turn with "
+                                           "the rotor (unbalance), not stand still (no gravity)")
+            .optional(0.0),
+        P::body("spin_body", "pin whose speed is held (default: the first body)").optional(""),
+    };
+    kind.run = [](const ModelSpec& spec, const ProgressFn& progress, const SampleObserver&) {
+        return runStaticDeflection(spec, progress);
+    };
+    return kind;
 }
 
 }  // namespace milldyn

@@ -1,5 +1,7 @@
 #include "driver/outputs/Schematic.h"
 
+#include "driver/analyses/AnalysisRegistry.h"
+
 #include "driver/Units.h"
 #include "driver/outputs/AtomicFile.h"
 #include "driver/outputs/OutputSet.h"
@@ -401,27 +403,18 @@ bool sceneHasSketches(const Scene& scene) { return !scene.sketches().empty(); }
 
 std::vector<double> parseSchematicInstants(const ModelSpec& spec, const std::string& list, bool& angles) {
     const ElementSpec& sc = spec.scenario;
-    double from = 0, to = 0;
-    if (sc.type == "kinetostatic") {
-        angles = true;
-        from = sc.number("angle_from");
-        to = sc.number("angle_to");
-        if (from > to) std::swap(from, to);
-    } else if (sc.type == "transient") {
-        angles = false;
-        to = sc.number("end_time");
-    } else {
-        throw std::invalid_argument("--schematic draws transient and kinetostatic scenarios; this one is '" + sc.type +
-                                    "'");
+    const AnalysisKind* kind = findAnalysisKind(sc.type);
+    if (!kind || !kind->schematicSpan) {
+        std::string drawn;  // the kinds that span a schematic: "kinetostatic and transient"
+        for (const AnalysisKind* k : analysisKindList())
+            if (k->schematicSpan) drawn += (drawn.empty() ? "" : " and ") + k->schema.type;
+        throw std::invalid_argument("--schematic draws " + drawn + " scenarios; this one is '" + sc.type + "'");
     }
+    const SchematicSpan span = kind->schematicSpan(sc);
+    angles = span.angles;
+    const double from = span.from, to = span.to;
+    if (list.empty()) return span.defaults;
     std::vector<double> out;
-    if (list.empty()) {
-        const bool one = angles && sc.number("angle_points") <= 1;
-        if (one) return {sc.number("angle_from")};
-        for (int k = 0; k < 4; ++k) out.push_back(angles ? sc.number("angle_from") + (sc.number("angle_to") - sc.number("angle_from")) * k / 4
-                                                         : to * (k < 3 ? k / 4.0 : 1.0));
-        return out;
-    }
     const char* unit = angles ? "rad" : "s";
     const std::string what = angles ? "carrier angle" : "time";
     std::size_t start = 0;

@@ -137,6 +137,17 @@ Complex DqInductionMotor::flux(const SimTK::State& s, int k) const {
     return {z[m_flux + 2 * k], z[m_flux + 2 * k + 1]};
 }
 
+std::string DqInductionMotor::electricalStateName(int k) const {
+    static const char* const kFlux[] = {"psi_s_alpha", "psi_s_beta", "psi_r1_alpha", "psi_r1_beta",
+                                        "psi_r2_alpha", "psi_r2_beta"};
+    return kFlux[k];
+}
+
+std::string DqInductionMotor::supplyDescription() const {
+    return "S_k = " + formatNumber(m_params.shortCircuitPower / 1e6, 4) + " MVA, X/R = " +
+           formatNumber(m_params.sourceXR, 3);
+}
+
 int DqInductionMotor::firstFluxIndex(const SimTK::State& s) const {
     return int(s.getZStart(m_forces.getMySubsystemIndex())) + int(m_flux);
 }

@@ -5,12 +5,14 @@
 // supply interruptions and a source impedance.
 
 #include "plugins/motors/Starter.h"
+#include "plugins/scene/DriveCapabilities.h"
 
 #include <Simbody.h>
 
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace milldyn {
@@ -118,7 +120,9 @@ struct DqInductionMotorParams {
  * opening's arc is not a flow (the balance is off by it). Iron, friction
  * and stray losses, saturation and skin effect are not modelled.
  */
-class DqInductionMotor : public SimTK::Force::Custom::Implementation {
+class DqInductionMotor : public SimTK::Force::Custom::Implementation,
+                         public ElectricalStates,
+                         public SupplyVoltageDip {
 public:
     /// Throws std::invalid_argument naming the parameter that is out of range.
     DqInductionMotor(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& shaft,
@@ -145,7 +149,7 @@ public:
     /// Voltage dip at the supply point 1 − |v_pcc|/|e| [-].
     double calcVoltageDip(const SimTK::State& state) const;
     /// Largest dip over the accepted steps so far [-].
-    double getPeakVoltageDip(const SimTK::State& state) const;
+    double getPeakVoltageDip(const SimTK::State& state) const override;
     /// Frequency converter: output frequency over rated f [-] (1 otherwise).
     double calcSupplyFrequency(const SimTK::State& state) const;
     /// Rotor resistance ratio r [-] of the starter in this state.
@@ -181,6 +185,16 @@ public:
     int firstFluxIndex(const SimTK::State& state) const;
     int fluxStateCount() const { return 2 + 2 * m_nr; }
     bool hasSource() const { return m_Rk > 0; }
+
+    // ElectricalStates (a linear model's motor_model): the fluxes.
+    int firstElectricalState(const SimTK::State& state) const override { return firstFluxIndex(state); }
+    int electricalStateCount() const override { return fluxStateCount(); }
+    std::string electricalStateName(int k) const override;
+    double electricalFrameSpeed() const override { return 2 * M_PI * m_params.frequency; }
+    // SupplyVoltageDip (a transient's motor reports): the source impedance.
+    bool hasSupplyImpedance() const override { return hasSource(); }
+    double voltageDipLimit() const override { return m_params.voltageDipLimit; }
+    std::string supplyDescription() const override;
     /// Frequency converter: the hold slip speed Δω_h [rad/s electrical].
     double holdSlipSpeed() const { return m_holdSlip; }
     const DqInductionMotorParams& params() const { return m_params; }

@@ -4,6 +4,7 @@
 
 #include "plugins/motors/Starter.h"
 #include "plugins/motors/TorqueSpeedCurve.h"
+#include "plugins/scene/DriveCapabilities.h"
 
 #include <Simbody.h>
 
@@ -138,14 +139,14 @@ std::string describeRatedLosses(const TorqueSpeedCurveParams& curve, double rate
  * InductionMotorTest and StarterTest against the closed forms above, and by
  * the start oracle (validation/oracles/StartOracle.h).
  */
-class InductionMotor : public SimTK::Force::Custom::Implementation {
+class InductionMotor : public SimTK::Force::Custom::Implementation, public StaticTorqueSpeedCurve {
 public:
     /// Throws std::invalid_argument naming the parameter that is out of range.
     InductionMotor(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& shaft,
                    const InductionMotorParams& params);
 
     /// Natural torque (rated supply, DOL) at shaft speed ω [rad/s] [N*m].
-    double torqueAtSpeed(double omega) const { return m_curve.torque(omega); }
+    double torqueAtSpeed(double omega) const override { return m_curve.torque(omega); }
     /// Torque at shaft speed ω [rad/s] under a supply state [N*m].
     double torqueAtSpeed(double omega, const SupplyState& supply) const;
     /// Line current at ω under a supply state [A] (NaN without current data).
