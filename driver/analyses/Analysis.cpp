@@ -1,4 +1,5 @@
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/Campbell.h"
 
 #include "driver/ModelFile.h"
 #include "driver/SceneBuilder.h"
@@ -222,6 +223,7 @@ std::map<std::string, ElementSchema> makeAnalysisSchemas() {
         if (e.has("load") && e.has("rotor")) throw e.error("rotor", "not used with a load (the load's body is the rotor)");
     };
     schemas["resonance_map"] = map;
+    schemas["campbell"] = campbellSchema();
     return schemas;
 }
 
@@ -312,6 +314,7 @@ AnalysisResult dispatchAnalysis(const ModelSpec& spec, const ProgressFn& progres
     if (spec.scenario.type == "static_deflection") return runStaticDeflection(spec, progress);
     if (spec.scenario.type == "frequency_response") return runFrequencyResponse(spec, progress);
     if (spec.scenario.type == "resonance_map") return runResonanceMap(spec, progress);
+    if (spec.scenario.type == "campbell") return runCampbell(spec, progress);
     throw AnalysisError("analysis '" + spec.scenario.type + "' is not implemented");
 }
 
