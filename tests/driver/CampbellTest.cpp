@@ -197,6 +197,51 @@ TEST(Campbell, RefusesASupplyToScaleWithoutAMotor) {
     EXPECT_THROW(runAnalysis(readModelText(noMotor, "chain.yaml", defaultModelReader())), SpecError);
 }
 
+// Orders of another shaft are referred through the train's speed ratios.
+// Motor shaft a (J1) –k– pinion b (Jb), a rigid gear pair (20/80 teeth,
+// pitch radii 0.1/0.4 m: ω_c = −ω_b/4) to the wheel c (Jc) with the
+// crushing load. Textbook: the wheel reduced to the pinion,
+// J_eq = Jb + Jc/16, one elastic mode ω_n² = k(1/J1 + 1/J_eq). Against
+// the speed Ω of a: the mesh (20 per revolution of b) meets it at ω_n/20,
+// the load's order 4 (per revolution of c) at ω_n/(4/4) = ω_n.
+TEST(Campbell, OrdersOfAGearedShaftAreReferredThroughTheRatio) {
+    const double J1 = 0.5, Jb = 0.1, Jc = 3.2, k = 3e3;
+    const double wn = std::sqrt(k * (1 / J1 + 1 / (Jb + Jc / 16)));
+    const std::string text =
+        "format_version: 1\nname: geared chain\nbodies:\n"
+        "  - {name: a, inertia: " + num(J1) + " kg*m^2, joint: {type: pin}}\n"
+        "  - {name: b, inertia: " + num(Jb) + " kg*m^2, joint: {type: pin}}\n"
+        "  - {name: c, inertia: " + num(Jc) + " kg*m^2, joint: {type: pin, parent: ground, location: [0.5 m, 0 m, 0 m]}}\n"
+        "elements:\n"
+        "  - {type: InductionMotor, name: motor, body: a, law: kloss, rated_torque: 100 N*m, rated_speed: 1440 rpm,"
+        " synchronous_speed: 1500 rpm, breakdown_ratio: 2.5}\n"
+        "  - {type: TorsionalCoupling, name: shaft, bodies: [a, b], stiffness: " + num(k) +
+        " N*m/rad, damping: 0.5 N*m*s/rad}\n"
+        "  - {type: GearPair, name: mesh, bodies: [b, c], pitch_radii: [0.1 m, 0.4 m], teeth: [20, 80]}\n"
+        "  - {type: AngleLoad, name: crushing, bodies: [c], shape: half_sine_pulse, peak_torque: 100 N*m,"
+        " pulse_start: 0 deg, pulse_width: 180 deg, cycles_per_revolution: 1, listed_harmonics: 4}\n"
+        "scenario: {analysis: campbell, reference_shaft: a, speed_min: 5 rad/s, speed_max: 200 rad/s, points: 9}\n"
+        "outputs: {plots: false}\n";
+    const AnalysisResult r = runAnalysis(readModelText(text, "geared.yaml", defaultModelReader()));
+    ASSERT_EQ(r.find("elastic_modes")->value, 1.0);
+    EXPECT_NEAR(r.rows.front()[r.findColumn("natural_frequency_1_rad_per_s")] / wn, 1.0, 1e-8);
+    EXPECT_NEAR(crossingSpeed(r, 1, "mesh.mesh_frequency") / (wn / 20), 1.0, 1e-8);
+    EXPECT_NEAR(crossingSpeed(r, 1, "crushing.order_4") / wn, 1.0, 1e-8);
+    // Per revolution of a: the mesh 20, the load's order 4 of c is 1.
+    const DataTable& t = table(r, "campbell_crossings");
+    const std::vector<std::string> names = campbellLineNames(r);
+    for (const auto& row : t.rows) {
+        const std::string& line = names.at(std::size_t(row[col(t.columnNames, "order")]));
+        const double perRev = row[col(t.columnNames, "order_per_rev")];
+        if (line == "mesh.mesh_frequency") {
+            EXPECT_NEAR(perRev, 20.0, 1e-9);
+        }
+        if (line == "crushing.order_4") {
+            EXPECT_NEAR(perRev, 1.0, 1e-9);
+        }
+    }
+}
+
 // One numbering: the summary's natural_frequency_k is the mode_shapes row
 // numbered k; the rigid rotation is mode 0.
 TEST(ModeNumbering, LinearizeSummaryAndModeShapesAgree) {
