@@ -139,8 +139,18 @@ public:
     bool supplyScaled() const { return m_supplyScaled; }
     std::size_t evaluations() const { return m_evaluations; }
 
-    /// The train at speed `speed` of the reference shaft.
+    /// The train at speed `speed` of the reference shaft; a failure names
+    /// the speed.
     Point at(double speed) {
+        try {
+            return atSpeed(speed);
+        } catch (const AnalysisError& e) {
+            throw AnalysisError("campbell at " + formatNumber(speed) + " rad/s of " + m_reference + ": " + e.what());
+        }
+    }
+
+private:
+    Point atSpeed(double speed) {
         ++m_evaluations;
         if (!m_supplyScaled) {
             SimTK::State s = m_steady;
@@ -182,7 +192,6 @@ public:
         return evaluate(*scene1, s1, a1);
     }
 
-private:
     const ModelSpec& m_spec;
     const ElementSpec& m_sc;
     bool m_supplyScaled = true;
@@ -556,6 +565,8 @@ AnalysisResult runCampbell(const ModelSpec& spec, const ProgressFn& progress) {
                                   "elastic mode " + k + " at the operating speed"});
         result.results.push_back({"natural_frequency_" + k + "_rad_per_s", here.modes[m], "rad/s", "the same in rad/s"});
     }
+    result.results.push_back({"operating_points_evaluated", double(model.evaluations()), "1",
+                              "linearizations: the grid, each crossing's trial speeds, the operating speed"});
     for (std::size_t o = 0; o < operating.size(); ++o)
         result.results.push_back({"operating_speed_" + std::to_string(o + 1) + "_rpm", operating[o] * kRpm, "rpm",
                                   "operating speed the margins are taken to"});
