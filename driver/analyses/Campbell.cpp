@@ -234,7 +234,7 @@ private:
                     throw m_sc.error("supply_frequency",
                                      "InductionMotor '" + e.name + "': synchronous speed " + formatNumber(wc * kRpm) +
                                          " rpm is not " + formatNumber(grid / kTwoPi) +
-                                         " Hz over a whole number of pole pairs; give the motor's supply_frequency");
+                                         " Hz over a whole number of pole pairs; set supply_frequency to the supply it is rated for");
                 m_motors.push_back({i, e.name, e.text("body"), std::round(p), wc});
             } else if (e.type == "DqInductionMotor") {
                 const double f = e.number("frequency") * kTwoPi;
