@@ -13,6 +13,7 @@ AnalysisKind staticDeflectionKind();   // StaticDeflection.cpp
 AnalysisKind frequencyResponseKind();  // FrequencyResponse.cpp
 AnalysisKind kinetostaticKind();       // Kinetostatic.cpp
 AnalysisKind resonanceMapKind();       // ResonanceMap.cpp
+AnalysisKind campbellKind();           // Campbell.cpp
 
 namespace {
 
@@ -31,6 +32,7 @@ std::map<std::string, AnalysisKind> makeRegistry() {
     add(frequencyResponseKind());
     add(kinetostaticKind());
     add(resonanceMapKind());
+    add(campbellKind());
     return kinds;
 }
 

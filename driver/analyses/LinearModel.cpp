@@ -364,6 +364,21 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
     return lm;
 }
 
+double rigidModeBound(const LinearModel& model) {
+    const double top = model.naturalFrequencies.size() > 0 ? model.naturalFrequencies.maxCoeff() : 0.0;
+    return std::max(1e-6 * top, model.frequencyFloor);
+}
+
+std::vector<int> elasticModes(const LinearModel& model) {
+    const double bound = rigidModeBound(model);
+    std::vector<int> out;
+    for (Eigen::Index k = 0; k < model.naturalFrequencies.size(); ++k)
+        if (model.naturalFrequencies[k] > bound) out.push_back(int(k));
+    std::sort(out.begin(), out.end(),
+              [&](int a, int b) { return model.naturalFrequencies[a] < model.naturalFrequencies[b]; });
+    return out;
+}
+
 bool isRigidEigenvalue(const LinearModel& model, std::complex<double> lambda) {
     const double scale = model.eigenvalues.size() > 0 ? model.eigenvalues.cwiseAbs().maxCoeff() : 0.0;
     return std::abs(lambda) <= std::max(1e-9 * scale, model.frequencyFloor);

@@ -110,9 +110,23 @@ LinearModel linearizeScene(const Scene& scene, const SimTK::State& operatingPoin
 /// ±~1e-7 when the largest |λ| is ~75 1/s: above 1e-9·max|λ|, below the floor.
 bool isRigidEigenvalue(const LinearModel& model, std::complex<double> lambda);
 
+/// The elastic modes of `model`: indices into naturalFrequencies (ascending)
+/// of the modes above max(1e-6·max ω, frequencyFloor); the others are
+/// rigid-body modes (a free rotation, the differencing's round-off).
+/// The one numbering of modes every analysis uses (linearize's summary,
+/// mode_shapes.csv, modes.csv, resonance_map, campbell): elastic modes are
+/// modes 1, 2, ... in ascending frequency; rigid-body modes are mode 0.
+std::vector<int> elasticModes(const LinearModel& model);
+/// Frequencies up to this [rad/s] are rigid-body modes (elasticModes' bound).
+double rigidModeBound(const LinearModel& model);
+
 /// Fills naturalFrequencies and modeShapes from K v = ω² M v (K's symmetric
 /// part); linearizeScene does this unless told not to.
 void calcUndampedModes(LinearModel& model);
+
+/// Each mode's number (index as naturalFrequencies): elastic modes 1, 2, ...
+/// ascending, rigid-body modes 0 (elasticModes).
+std::vector<int> modeNumbers(const LinearModel& model);
 
 struct AnalysisResult;
 /// Adds M, C, K, A and the eigenvalue and mode tables to a result.

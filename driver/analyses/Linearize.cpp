@@ -13,6 +13,13 @@
 
 namespace milldyn {
 
+std::vector<int> modeNumbers(const LinearModel& lm) {
+    std::vector<int> number(lm.naturalFrequencies.size(), 0);
+    int k = 0;
+    for (int m : elasticModes(lm)) number[m] = ++k;
+    return number;
+}
+
 void addLinearModelOutputs(const LinearModel& lm, AnalysisResult& result) {
     const int n = static_cast<int>(lm.M.rows());
     auto matrix = [](const std::string& name, const std::string& unit, const Eigen::MatrixXd& m) {
@@ -51,9 +58,12 @@ void addLinearModelOutputs(const LinearModel& lm, AnalysisResult& result) {
         result.extraTables.push_back(modeDampingTable(lm));
     }
 
+    // Numbered as every output numbers modes (elasticModes): elastic 1, 2,
+    // ... ascending, rigid-body modes 0.
+    const std::vector<int> numbers = modeNumbers(lm);
     DataTable modes{"modes", {"mode", "natural_frequency", "natural_frequency_hz"}, {"1", "rad/s", "Hz"}, {}};
     for (int i = 0; i < n; ++i)
-        modes.rows.push_back({double(i + 1), lm.naturalFrequencies[i], lm.naturalFrequencies[i] / (2 * M_PI)});
+        modes.rows.push_back({double(numbers[i]), lm.naturalFrequencies[i], lm.naturalFrequencies[i] / (2 * M_PI)});
     result.extraTables.push_back(modes);
 }
 
@@ -138,8 +148,9 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
         result.columnNames.push_back(name);
         result.columnUnits.push_back("1");
     }
+    const std::vector<int> numbers = modeNumbers(lm);
     for (int m = 0; m < n; ++m) {
-        std::vector<double> row = {double(m + 1), lm.naturalFrequencies[m] / (2 * M_PI)};
+        std::vector<double> row = {double(numbers[m]), lm.naturalFrequencies[m] / (2 * M_PI)};
         for (int b = 0; b < nb; ++b) row.push_back(lm.modeShapes(b, m));
         result.rows.push_back(row);
     }
@@ -149,19 +160,28 @@ AnalysisResult runLinearize(const ModelSpec& spec, const ProgressFn&) {
     // elastic ones.
     // (and the differencing's round-off: a train with no stiffness at all
     // has only rigid modes).
-    const double rigidBelow = std::max(1e-6 * lm.naturalFrequencies.maxCoeff(), lm.frequencyFloor);
+    const double rigidBelow = rigidModeBound(lm);
     int elastic = 0;
-    for (int m = 0; m < n; ++m) {
-        if (lm.naturalFrequencies[m] <= rigidBelow) continue;
+    for (int m : elasticModes(lm)) {
         ++elastic;
         // The body that moves most in this mode names it.
         Eigen::Index at = 0;
         lm.modeShapes.col(m).cwiseAbs().maxCoeff(&at);
-        result.results.push_back({"natural_frequency_" + std::to_string(elastic), lm.naturalFrequencies[m], "rad/s",
-                                  "undamped elastic mode " + std::to_string(elastic) + " (" +
+        const std::string number = std::to_string(elastic);
+        result.results.push_back({"natural_frequency_" + number, lm.naturalFrequencies[m], "rad/s",
+                                  "undamped elastic mode " + number + " (" +
                                       std::to_string(lm.naturalFrequencies[m] / (2 * M_PI)) + " Hz), largest at " +
                                       lm.bodyNames[at]});
+        // The same in Hz, the unit in the name (natural_frequency_k keeps rad/s).
+        result.results.push_back({"natural_frequency_" + number + "_hz", lm.naturalFrequencies[m] / (2 * M_PI), "Hz",
+                                  "undamped elastic mode " + number + " in Hz (mode_shapes.csv row with mode " +
+                                      number + ")"});
     }
+    if (elastic < n)
+        result.notes.push_back("modes numbered as in every output: elastic modes 1.." + std::to_string(elastic) +
+                               " in ascending frequency; " + std::to_string(n - elastic) +
+                               " rigid-body mode(s) (at most " + std::to_string(rigidBelow) +
+                               " rad/s) are mode 0 in mode_shapes.csv and modes.csv");
     for (Eigen::Index i = 0; i < lm.eigenvalues.size(); ++i) {
         const auto l = lm.eigenvalues[i];
         if (l.imag() < 0) continue;  // one of each conjugate pair

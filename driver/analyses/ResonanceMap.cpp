@@ -25,12 +25,6 @@ namespace milldyn {
 
 namespace {
 
-/// Not a free rotation (ω² below 1e-12 of the largest, as linearize counts).
-bool isElastic(const LinearModel& lm, int k) {
-    const double w = lm.naturalFrequencies[k], top = lm.naturalFrequencies.maxCoeff();
-    return w * w > 1e-12 * top * top;
-}
-
 /// The scene's order excitations (a gear pair's tooth-mesh frequency
 /// z·|ω_gear|) against the rotor speed Ω: the steady speed ratio ρ =
 /// ω_gear/Ω makes each a line f = z·|ρ|·Ω; where it meets an elastic
@@ -47,13 +41,16 @@ void addOrderExcitations(const Scene& scene, const SimTK::State& steady, const L
         result.columnNames.push_back(e.name);
         result.columnUnits.push_back("rad/s");
         for (auto& row : result.rows) row.push_back(perRotor * row[0]);
+        // The same in Hz beside (the probe NAME.mesh_frequency of a run is Hz).
+        result.columnNames.push_back(e.name + "_hz");
+        result.columnUnits.push_back("Hz");
+        for (auto& row : result.rows) row.push_back(perRotor * row[0] / (2 * M_PI));
         result.results.push_back({e.name + ".per_rotor_speed", perRotor, "1",
                                   "excitation frequency per rotor speed: z x (speed of " + e.body + ")/(speed of " +
                                       rotor.name + ") at steady running"});
-        int elastic = 0;  // numbered as linearize numbers them: elastic modes from 1
-        for (int k = 0; k < lm.naturalFrequencies.size(); ++k) {
+        int elastic = 0;  // numbered as every output numbers them: elastic modes from 1 (elasticModes)
+        for (int k : elasticModes(lm)) {
             const double wk = lm.naturalFrequencies[k];
-            if (!isElastic(lm, k)) continue;
             ++elastic;
             const double at = wk / perRotor;
             if (at < wMin || at > wMax) continue;
@@ -94,15 +91,20 @@ AnalysisResult runOrderMap(const ModelSpec& spec, const Scene& scene, const SimT
     }
     addOrderExcitations(scene, steady, lm, *rotor, wMin, wMax, result);
     int elastic = 0;
-    for (int k = 0; k < lm.naturalFrequencies.size(); ++k) {
-        if (!isElastic(lm, k)) continue;
-        result.columnNames.push_back("natural_frequency_" + std::to_string(++elastic));
+    for (int k : elasticModes(lm)) {
+        const std::string number = std::to_string(++elastic);
+        result.columnNames.push_back("natural_frequency_" + number);
         result.columnUnits.push_back("rad/s");
         for (auto& row : result.rows) row.push_back(lm.naturalFrequencies[k]);
+        result.columnNames.push_back("natural_frequency_" + number + "_hz");
+        result.columnUnits.push_back("Hz");
+        for (auto& row : result.rows) row.push_back(lm.naturalFrequencies[k] / (2 * M_PI));
     }
     addLinearModelOutputs(lm, result);
+    // The plot in rad/s (the Hz columns beside are the same lines).
     std::vector<std::size_t> cols;
-    for (std::size_t c = 2; c < result.columnNames.size(); ++c) cols.push_back(c);
+    for (std::size_t c = 2; c < result.columnNames.size(); ++c)
+        if (result.columnUnits[c] == "rad/s") cols.push_back(c);
     result.plots.push_back({"resonance_map", cols});
     if (progress) progress(points, points);
     return result;
@@ -167,14 +169,17 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
         result.columnNames.push_back(scene->probes()[p].name + ".dynamic_factor");
         result.columnUnits.push_back("1");
     }
-    for (std::size_t k = 0; k < b.size(); ++k) {
-        result.columnNames.push_back(scene->probes()[outputs[0]].name + ".dynamic_factor_k" + std::to_string(k + 1));
-        result.columnUnits.push_back("1");
-    }
+    // Each harmonic's share, for every coupling.
+    for (int p : outputs)
+        for (std::size_t k = 0; k < b.size(); ++k) {
+            result.columnNames.push_back(scene->probes()[p].name + ".dynamic_factor_k" + std::to_string(k + 1));
+            result.columnUnits.push_back("1");
+        }
     // A peak is taken only among speeds where some harmonic reaches the
     // coupling: where every harmonic's row pattern cancels there
     // (LoadResponse::cancels) the factor is round-off (~1e-16), not a response.
     std::vector<double> peak(outputs.size(), 0.0), peakAt(outputs.size(), 0.0), worstRatio(outputs.size(), 0.0);
+    std::vector<std::size_t> peakRow(outputs.size(), 0);
     std::vector<bool> reached(outputs.size(), false);
     for (int i = 0; i < points; ++i) {
         const double w = wMin + (wMax - wMin) * i / (points - 1);
@@ -197,13 +202,14 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
                     }
                 }
                 sum += b[k] * a;
-                if (o == 0) perHarmonic.push_back(a / response.staticReference(outputs[o]));
+                perHarmonic.push_back(a / response.staticReference(outputs[o]));
             }
             const double df = sum / (bSum * response.staticReference(outputs[o]));
             row.push_back(df);
             if (!cancelled && (!reached[o] || df > peak[o])) {
                 peak[o] = df;
                 peakAt[o] = w;
+                peakRow[o] = static_cast<std::size_t>(i);
                 reached[o] = true;
             }
         }
@@ -229,27 +235,114 @@ AnalysisResult runResonanceMap(const ModelSpec& spec, const ProgressFn& progress
         }
         result.results.push_back({name + ".peak_dynamic_factor", peak[o], "1", "largest over the speed range"});
         result.results.push_back({name + ".peak_speed", peakAt[o], "rad/s", "rotor speed of that peak"});
-    }
-    // Bands of the first coupling (the drive's) above the threshold.
-    int bands = 0;
-    for (std::size_t i = 0; i < result.rows.size();) {
-        if (result.rows[i][2] <= threshold) {
-            ++i;
-            continue;
+        // The peak with its band (the speeds around it above the
+        // threshold) or a note that it stays below; and what limits it.
+        const std::size_t column = 2 + o;
+        std::size_t from = peakRow[o], to = peakRow[o];
+        while (from > 0 && result.rows[from - 1][column] > threshold) --from;
+        while (to + 1 < result.rows.size() && result.rows[to + 1][column] > threshold) ++to;
+        char text[400];
+        if (peak[o] > threshold) {
+            result.results.push_back({name + ".peak_band_from", result.rows[from][0], "rad/s",
+                                      "the band around the peak where the dynamic factor exceeds the threshold, from"});
+            result.results.push_back({name + ".peak_band_to", result.rows[to][0], "rad/s", "... to"});
+            std::snprintf(text, sizeof text, "%s: peak dynamic factor %.4g at %.5g rpm, in the band %.5g-%.5g rpm above "
+                                             "the threshold %.3g",
+                          name.c_str(), peak[o], peakAt[o] * 60 / (2 * M_PI), result.rows[from][1], result.rows[to][1],
+                          threshold);
+        } else {
+            std::snprintf(text, sizeof text, "%s: peak dynamic factor %.4g at %.5g rpm stays below the threshold %.3g: "
+                                             "no band to avoid",
+                          name.c_str(), peak[o], peakAt[o] * 60 / (2 * M_PI), threshold);
         }
-        std::size_t j = i;
-        while (j + 1 < result.rows.size() && result.rows[j + 1][2] > threshold) ++j;
-        ++bands;
-        const std::string tag = "avoid_band_" + std::to_string(bands);
-        result.results.push_back({tag + "_from", result.rows[i][0], "rad/s", "dynamic factor above threshold from"});
-        result.results.push_back({tag + "_to", result.rows[j][0], "rad/s", "... to"});
-        char text[160];
-        std::snprintf(text, sizeof text, "avoid %.2f-%.2f rpm: %s dynamic factor above %.3g", result.rows[i][1],
-                      result.rows[j][1], scene->probes()[outputs[0]].name.c_str(), threshold);
-        result.notes.push_back(text);
-        i = j + 1;
+        std::string note = text;
+        // The harmonic that dominates the peak and the mode nearest its
+        // frequency: a resonance's peak is set by that mode's damping.
+        std::size_t dominant = 0;
+        const std::size_t perHarmonic0 = 2 + outputs.size() + o * b.size();
+        for (std::size_t k = 1; k < b.size(); ++k)
+            if (b[k] * result.rows[peakRow[o]][perHarmonic0 + k] > b[dominant] * result.rows[peakRow[o]][perHarmonic0 + dominant])
+                dominant = k;
+        const double P = timeClock ? (dominant + 1) * z * peakAt[o]
+                                   : load->forcingOrder(int(dominant + 1)) * std::abs(groups.empty() ? 1.0 : groups[0]) * peakAt[o];
+        int nearest = -1;
+        for (Eigen::Index i = 0; i < lm.eigenvalues.size(); ++i)
+            if (lm.eigenvalues[i].imag() > 0 && !isRigidEigenvalue(lm, lm.eigenvalues[i]) &&
+                (nearest < 0 || std::abs(lm.eigenvalues[i].imag() - P) < std::abs(lm.eigenvalues[nearest].imag() - P)))
+                nearest = int(i);
+        if (nearest >= 0) {
+            const auto l = lm.eigenvalues[nearest];
+            const double zeta = -l.real() / std::abs(l);
+            if (std::abs(P - l.imag()) <= 0.2 * l.imag())
+                std::snprintf(text, sizeof text, "; harmonic %zu at %.4g Hz meets the damped mode at %.4g Hz, damping "
+                                                 "ratio %.3g (a resonance peaks near 1/(2·ratio) = %.3g times its "
+                                                 "static response)",
+                              dominant + 1, P / (2 * M_PI), l.imag() / (2 * M_PI), zeta, zeta > 0 ? 1 / (2 * zeta) : 0.0);
+            else
+                std::snprintf(text, sizeof text, "; harmonic %zu at %.4g Hz, no mode within 20 %% (nearest damped mode "
+                                                 "%.4g Hz): not a resonance",
+                              dominant + 1, P / (2 * M_PI), l.imag() / (2 * M_PI));
+            note += text;
+        }
+        // A coupling the load hardly loads quasi-statically (a free
+        // flywheel's shaft: its torque is inertia, ∝ P²) has a factor over
+        // almost nothing: say so, with the amplitude it stands for.
+        double largestReference = 0;
+        for (int p : outputs) largestReference = std::max(largestReference, response.staticReference(p));
+        const double reference = response.staticReference(outputs[o]);
+        result.results.push_back({name + ".static_reference", reference, "1",
+                                  "quasi-static in-phase amplitude per unit harmonic amplitude (the factor's denominator)"});
+        if (reference < 0.01 * largestReference) {
+            std::snprintf(text, sizeof text, "; its quasi-static response %.3g (per unit load amplitude) is %.2g of the "
+                                             "largest coupling's: the factor is over almost nothing, not a magnification "
+                                             "(its peak amplitude is %.3g per unit load amplitude)",
+                          reference, reference / largestReference, peak[o] * reference);
+            note += text;
+        }
+        if (from == to && peak[o] > threshold)
+            note += "; the band is one grid point wide: the peak's value depends on the grid (refine points or "
+                    "narrow the range around it)";
+        if (peakRow[o] == 0 || peakRow[o] + 1 == result.rows.size())
+            note += "; the peak is at the edge of the speed range: it may rise beyond it";
+        result.notes.push_back(note);
     }
-    result.results.push_back({"avoid_bands", double(bands), "1", "speed bands above the threshold"});
+    // Bands above the threshold, for every coupling (NAME.avoid_band_i_*);
+    // avoid_band_i_* and avoid_bands without a name are the first
+    // coupling's (the drive's), as before.
+    int firstBands = 0;
+    for (std::size_t o = 0; o < outputs.size(); ++o) {
+        const std::string& name = scene->probes()[outputs[o]].name;
+        const std::size_t column = 2 + o;
+        int bands = 0;
+        for (std::size_t i = 0; i < result.rows.size();) {
+            if (result.rows[i][column] <= threshold) {
+                ++i;
+                continue;
+            }
+            std::size_t j = i;
+            while (j + 1 < result.rows.size() && result.rows[j + 1][column] > threshold) ++j;
+            ++bands;
+            const std::string tag = "avoid_band_" + std::to_string(bands);
+            result.results.push_back({name + "." + tag + "_from", result.rows[i][0], "rad/s",
+                                      "dynamic factor of " + name + " above threshold from"});
+            result.results.push_back({name + "." + tag + "_to", result.rows[j][0], "rad/s", "... to"});
+            if (o == 0) {
+                result.results.push_back({tag + "_from", result.rows[i][0], "rad/s",
+                                          "dynamic factor above threshold from (the first coupling, " + name + ")"});
+                result.results.push_back({tag + "_to", result.rows[j][0], "rad/s", "... to"});
+            }
+            char text[200];
+            std::snprintf(text, sizeof text, "avoid %.2f-%.2f rpm: %s dynamic factor above %.3g", result.rows[i][1],
+                          result.rows[j][1], name.c_str(), threshold);
+            result.notes.push_back(text);
+            i = j + 1;
+        }
+        result.results.push_back({name + ".avoid_bands", double(bands), "1", "speed bands above the threshold"});
+        if (o == 0) firstBands = bands;
+    }
+    result.results.push_back({"avoid_bands", double(firstBands), "1",
+                              "speed bands above the threshold of the first coupling (" +
+                                  scene->probes()[outputs[0]].name + ")"});
     // The load's first body is the rotor whose speed is swept.
     const std::vector<SimTK::MobilizedBody> loadBodies = load->forcingBodies();
     for (const auto& rotor : scene->bodies())

@@ -1,5 +1,7 @@
 #include "driver/outputs/Writers.h"
 
+#include "driver/outputs/CampbellPlot.h"
+
 #include "driver/outputs/AtomicFile.h"
 #include "plugins/scene/EngineTag.h"
 #include "driver/outputs/OutputSet.h"
@@ -152,7 +154,9 @@ std::vector<std::string> writeResultFiles(const std::string& dir, const ModelSpe
     written.push_back(main);
     for (const auto& t : result.extraTables) {
         const std::string path = dir + "/" + t.name + ".csv";
-        writeFileAtomically(path, formatCsv(t.columnNames, t.columnUnits, t.rows));
+        // The crossings of a Campbell diagram name their excitation line.
+        writeFileAtomically(path, t.name == "campbell_crossings" ? formatCampbellCrossingsCsv(result, t)
+                                                                  : formatCsv(t.columnNames, t.columnUnits, t.rows));
         written.push_back(path);
     }
     if (!result.matrices.empty()) {
@@ -235,7 +239,12 @@ std::vector<ModeShapeBars> modeShapeBars(const AnalysisResult& result) {
     for (const auto& row : result.rows) {
         if (row.size() != result.columnNames.size()) continue;
         char title[96];
-        std::snprintf(title, sizeof title, "mode %.0f: %.4g Hz", row[0], row[1]);
+        // Mode 0: a rigid-body mode (elastic modes are numbered from 1, as in
+        // the summary's natural_frequency_k).
+        if (row[0] == 0)
+            std::snprintf(title, sizeof title, "mode 0 (rigid body): %.4g Hz", row[1]);
+        else
+            std::snprintf(title, sizeof title, "mode %.0f: %.4g Hz", row[0], row[1]);
         ModeShapeBars m{title, {}};
         for (std::size_t c = 2; c < row.size(); ++c) m.bars.emplace_back(result.columnNames[c], row[c]);
         out.push_back(m);
@@ -360,6 +369,13 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
     }
     // gnuplot runs in `dir`: the table by its bare name (renderGnuplotPng).
     const std::string csvName = std::filesystem::path(csvPath).filename().string();
+    const std::string campbell = campbellPlotCommands(result, csvName);
+    if (!campbell.empty()) {
+        if (renderGnuplotPng(dir + "/campbell.png", campbell, 1200, 700))
+            written.push_back(dir + "/campbell.png");
+        else
+            missing.push_back("campbell.png");
+    }
     for (const auto& plot : result.plots) {
         if (plot.second.empty()) continue;
         const std::string png = dir + "/" + plot.first + ".png";
