@@ -203,6 +203,39 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
     return h;
 }
 
+/// The regularisation band of the loads on a shaft: the largest
+/// regularisation speed (ElementSchema::regularisationSpeedKey, registered
+/// in Scene::regularisationSpeeds) of the elements whose bodies include the
+/// shaft, times kCreepFactor. Elements on other shafts are not referred to
+/// it (their band is a speed of their own shaft).
+struct CreepBand {
+    double speed = 0;     ///< |ω| below which a held speed is a creep [rad/s]
+    std::string why;      ///< "crushing.smoothing_speed = 0.01 rad/s, ..."
+};
+/// A sign-regularised law tanh(ω/ωs) reaches 0.9999 of its full value at
+/// 4.95·ωs: inside 5·ωs a drive below the load holds an equilibrium creep
+/// (the same factor scenario.stop_speed must keep above every ωs).
+constexpr double kCreepFactor = 5;
+CreepBand creepBand(const Scene& scene, const ModelSpec& spec, const std::string& body) {
+    const std::string on = ", " + elementsOnBody(spec, body) + ",";
+    CreepBand band;
+    for (const Scene::RegularisationSpeed& r : scene.regularisationSpeeds()) {
+        if (on.find(", " + r.element + ",") == std::string::npos || !(r.speed > 0)) continue;
+        band.speed = std::max(band.speed, kCreepFactor * r.speed);
+        band.why += (band.why.empty() ? "" : ", ") + r.element + "." + r.key + " = " + fmt(r.speed) + " rad/s";
+    }
+    return band;
+}
+/// Whether the held speed lies inside the band (a standstill), and the text.
+bool creeping(const HoldCheck& h, const CreepBand& band) {
+    return h.held && band.speed > 0 && std::abs(h.wHeld) < band.speed;
+}
+std::string creepText(const std::string& body, const CreepBand& band) {
+    return "inside the regularisation band of the loads on " + body + " (|ω| < " + fmt(band.speed) + " rad/s, " +
+           fmt(kCreepFactor) + " times the largest of " + band.why +
+           ": there a regularised law is not the model's law): a creep, a standstill, not a running speed";
+}
+
 /// The starting sequences (Scene::startSequences) in a state, by where they
 /// stand, each as "name: where it stands", joined by "; ".
 struct SequenceLists {
@@ -264,18 +297,23 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
     // (a stalled train rolled back) has made none, whatever its |ω|. Under
     // a periodic load, the last period's mean.
     const double progress = h.direction * h.wHeld;
+    // A held speed inside the loads' regularisation band is a standstill,
+    // whatever ω_ref: without a hinted speed ω_ref is the final speed, so a
+    // creep would otherwise always reach its stall_fraction.
+    const CreepBand band = creepBand(scene, spec, body.name);
+    const bool creep = creeping(h, band);
     if (!running.empty()) {
         result.verdict = "unfinished";
         result.verdictText = "start unfinished: the starting sequence had not finished" + endText + " (" + running +
                              "); " + body.name + " was at " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) + " rpm, " +
                              (h.held ? "held " : "not held ") + h.holdText +
                              "): no start time or steady values are given; lengthen end_time past the sequence's end";
-    } else if (h.held && waiting.empty() && progress >= fraction * h.wRef) {
+    } else if (h.held && !creep && waiting.empty() && progress >= fraction * h.wRef) {
         result.verdict = "completed";
         result.verdictText = "start completed: " + body.name + " held " + fmt(h.wHeld) + " rad/s (" + fmt(heldRpm) +
                              " rpm) " + h.holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref +
                              (finished.empty() ? "" : "; " + finished);
-    } else if (h.held && !h.stillRising) {
+    } else if (h.held && (!h.stillRising || creep)) {
         result.verdict = "stalled";
         // Drive and load torques at the last sample of the window.
         const std::vector<double>* last = nullptr;
@@ -291,7 +329,8 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
         }
         result.verdictText = "start stalled: " + body.name + " held " + fmt(h.wHeld) + " rad/s (" + fmt(heldRpm) +
                              " rpm, " + fmt(100 * progress / h.wRef) + " % of " + ref + ") " + h.holdText +
-                             (waiting.empty() ? ", below the " + fmt(fraction * 100) + " % that counts as started"
+                             (creep ? ", " + creepText(body.name, band)
+                              : waiting.empty() ? ", below the " + fmt(fraction * 100) + " % that counts as started"
                                               : " while the starting sequence waits on the shaft" + endText + " (" +
                                                     waiting + ")") +
                              "; there the drive torque is " + (drive.empty() ? "none" : drive) +
@@ -335,7 +374,9 @@ void judgeRun(const Scene& scene, const ModelSpec& spec, const SceneBody& body, 
                                  ? "the solved steady running"
                                  : "the bodies' given initial state (initial_* keys)";
     const std::string began = "started from " + from + ", " + body.name + " at " + fmt(h.wStart) + " rad/s";
-    const std::string heldText = h.held ? body.name + " held " + fmt(h.wHeld) + " rad/s " + h.holdText
+    const CreepBand band = creepBand(scene, spec, body.name);
+    const std::string heldText = h.held ? body.name + " held " + fmt(h.wHeld) + " rad/s " + h.holdText +
+                                              (creeping(h, band) ? ", " + creepText(body.name, band) : "")
                                         : body.name + " was not held " + h.holdText + " (it moved by up to " +
                                               fmt(h.worst) + " rad/s, ending at " + fmt(h.wEnd) + " rad/s)";
     const std::string ref = "; ω_ref = " + fmt(h.wRef) + " rad/s, " +
