@@ -82,6 +82,37 @@ void addTorqueLines(const Scene& scene, const ModelSpec& spec, ProbeRole role, c
     }
 }
 
+/// A quantity's extremes of both signs over the run (every integration step,
+/// extremes located inside the steps: PeakTracker).
+struct SignedPeaks {
+    PeakTracker largest, smallest;
+    explicit SignedPeaks(const PeakTracker::Fn& f)
+        : largest(f, PeakTracker::Measure::Largest), smallest(f, PeakTracker::Measure::Smallest) {}
+    void step(Simulation& sim, const SimTK::State& s) {
+        largest.step(sim, s);
+        smallest.step(sim, s);
+    }
+    /// The value of the larger magnitude, with its sign (the largest on a tie).
+    double peak() const { return largest.peak() >= -smallest.peak() ? largest.peak() : smallest.peak(); }
+};
+
+/// peak.NAME (the signed value at the largest |value|), run_max.NAME and
+/// run_min.NAME (the largest and smallest values) of the whole run.
+void addSignedPeaks(const std::string& name, const SignedPeaks& p, const std::string& unit, const std::string& what,
+                    const std::string& shaft, AnalysisResult& result) {
+    const std::string steps = " of the run (every integration step, located inside the steps)";
+    // No step at all (nothing integrated) leaves ±infinity: no peaks then.
+    if (!std::isfinite(p.largest.peak()) || !std::isfinite(p.smallest.peak())) return;
+    result.results.push_back({"peak." + name, p.peak(), unit,
+                              name + " at its largest magnitude" + steps + ", with its sign" + what, shaft});
+    result.results.push_back({"run_max." + name, p.largest.peak(), unit,
+                              "largest (most positive) " + name + steps + what, shaft});
+    result.results.push_back({"run_min." + name, p.smallest.peak(), unit,
+                              "smallest (most negative) " + name + steps + "; of opposite sign to run_max a reversal" +
+                                  what,
+                              shaft});
+}
+
 /// Whether speed_body held its speed over the last hold window before the
 /// first switch-off (or the end), with the numbers the verdicts quote.
 struct HoldCheck {
@@ -551,7 +582,9 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     if (!drivesOnOneShaft)
         for (std::size_t i : driveProbes)
             drivePeaks.emplace_back([&probes = scene->probes(), i](const SimTK::State& s) { return probes[i].value(s); });
-    std::vector<std::optional<PeakTracker>> peaks(probes.size());
+    // Every coupling and outputs.peaks probe: its largest and smallest value
+    // over the run (run_max., run_min.), the signed peak the larger in size.
+    std::vector<std::optional<SignedPeaks>> peaks(probes.size());
     for (std::size_t i = 0; i < probes.size(); ++i)
         if (probes[i].role == ProbeRole::CouplingTorque ||
             std::find(spec.outputs.peaks.begin(), spec.outputs.peaks.end(), probes[i].name) != spec.outputs.peaks.end())
@@ -584,9 +617,9 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             statisticsOf.push_back([&probes = scene->probes(), i](const SimTK::State& s) { return probes[i].value(s); });
         }
     WindowStatistics windowStatistics(statisticsOf, tWindowStart, tWindowEnd, periodRule);
-    std::vector<std::pair<NamedQuantity, PeakTracker>> speedPeaks;
+    std::vector<std::pair<NamedQuantity, SignedPeaks>> speedPeaks;
     for (const std::string& name : spec.outputs.peaks)
-        if (const auto q = findQuantity(*scene, name); q && !q->body.empty()) speedPeaks.emplace_back(*q, PeakTracker(q->f));
+        if (const auto q = findQuantity(*scene, name); q && !q->body.empty()) speedPeaks.emplace_back(*q, SignedPeaks(q->f));
     // A charge's fraction of its critical speed (SegmentCharge's
     // NAME.fraction_of_critical), its largest over the trajectory for the
     // near-centrifuging warning. Named by type: a capability would need a
@@ -753,26 +786,22 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         if (scene->probes()[i].role == ProbeRole::CouplingTorque) {
             const std::string name = scene->probes()[i].name;
             const std::string shaft = probeShaft(spec, name);
-            result.results.push_back({"peak." + name, peaks[i]->peak(), "N*m",
-                                      "largest |" + name + "| of the run (every integration step), the torque on " +
-                                          (shaft.empty() ? std::string("its driving shaft") : shaft) +
-                                          " (the driving shaft; the driven shaft carries it times the speed ratio)",
-                                      shaft});
+            const std::string on = ", the torque on " + (shaft.empty() ? std::string("its driving shaft") : shaft) +
+                                   " (the driving shaft; the driven shaft carries it times the speed ratio)";
+            addSignedPeaks(name, *peaks[i], "N*m", on, shaft, result);
         }
     for (const std::string& name : spec.outputs.peaks)
         for (std::size_t i = 0; i < scene->probes().size(); ++i) {
             const Probe& p = scene->probes()[i];
             if (p.name != name || p.role == ProbeRole::CouplingTorque) continue;
-            result.results.push_back({"peak." + name, peaks[i]->peak(), p.unit,
-                                      "largest |" + name + "| of the run (outputs.peaks; every integration step)"});
+            addSignedPeaks(name, *peaks[i], p.unit, " (outputs.peaks)", "", result);
             result.results.push_back(
                 {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
         }
     addSteadyStatistics(*scene, speedBody, windowStatistics, kSteadyQuantities, statisticsNamed, periodRule,
                         periodWhy, windowText, reached, steady, at, result);
     for (const auto& [q, tracker] : speedPeaks) {
-        result.results.push_back({"peak." + q.name, tracker.peak(), q.unit,
-                                  "largest |" + q.name + "| of the run (outputs.peaks; every integration step)"});
+        addSignedPeaks(q.name, tracker, q.unit, " (outputs.peaks)", "", result);
         result.results.push_back({"final." + q.name, q.f(steady), q.unit, q.name + " " + at + " (outputs.peaks)"});
     }
     // Above 90 % of critical speed anywhere on the trajectory (maxima
