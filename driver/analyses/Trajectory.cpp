@@ -131,7 +131,7 @@ std::pair<double, double> goldenSectionMaximum(const std::function<double(double
 }
 
 void PeakTracker::step(Simulation& sim, const SimTK::State& s) {
-    const double t = s.getTime(), v = std::abs(m_f(s));
+    const double t = s.getTime(), v = measured(s);
     if (m_count > 0 && t <= m_t[m_count - 1]) m_count = 0;  // a restart at the same instant: no interpolation across it
     if (m_count == 2 && m_v[1] >= m_v[0] && m_v[1] > v) {
         // A local maximum of the step-end values at m_t[1]: the parabola
@@ -147,7 +147,7 @@ void PeakTracker::step(Simulation& sim, const SimTK::State& s) {
         // margin: the parabola is only an estimate of the interpolant).
         if (estimate > m_peak && t0 >= sim.trajectoryFrom()) {
             ++m_refinements;
-            auto f = [&](double x) { return std::abs(m_f(sim.trajectoryAt(x))); };
+            auto f = [&](double x) { return measured(sim.trajectoryAt(x)); };
             const auto [bestAt, best] = goldenSectionMaximum(f, t0, t2);
             if (best > m_peak) {
                 m_peak = best;

@@ -8,7 +8,9 @@
 
 #include "driver/Simulation.h"
 
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -47,7 +49,8 @@ private:
 std::pair<double, double> goldenSectionMaximum(const std::function<double(double)>& f, double a, double b);
 
 /**
- * The largest |f(state)| of one quantity over the trajectory. Fed every
+ * The largest |f(state)| of one quantity over the trajectory (or, by
+ * Measure, its largest or smallest value: the same search on f or −f). Fed every
  * step end in order; where the step-end values have a local maximum of |f|
  * whose parabola through the three step ends could exceed the peak so far,
  * the maximum is located on the trajectory between the neighbouring step
@@ -58,18 +61,29 @@ std::pair<double, double> goldenSectionMaximum(const std::function<double(double
 class PeakTracker {
 public:
     using Fn = std::function<double(const SimTK::State&)>;
-    explicit PeakTracker(Fn f) : m_f(std::move(f)) {}
+    /// What is maximised: |f| (the peak's magnitude), f itself (the largest
+    /// value, run_max) or −f (the negated smallest value, run_min).
+    enum class Measure { Magnitude, Largest, Smallest };
+    explicit PeakTracker(Fn f, Measure measure = Measure::Magnitude) : m_f(std::move(f)), m_measure(measure) {}
     /// A step end: `s` realized to Acceleration, as onStep gives it.
     void step(Simulation& sim, const SimTK::State& s);
-    double peak() const { return m_peak; }
+    /// Magnitude: the largest |f| (0 before any step); Largest: the largest
+    /// f; Smallest: the smallest f (±infinity before any step).
+    double peak() const { return m_measure == Measure::Smallest ? -m_peak : m_peak; }
     double peakTime() const { return m_peakTime; }
     long refinements() const { return m_refinements; }
 
 private:
     Fn m_f;
-    double m_peak = 0, m_peakTime = 0;
+    Measure m_measure;
+    double measured(const SimTK::State& s) const {
+        const double v = m_f(s);
+        return m_measure == Measure::Magnitude ? std::abs(v) : m_measure == Measure::Largest ? v : -v;
+    }
+    double m_peak = m_measure == Measure::Magnitude ? 0.0 : -std::numeric_limits<double>::infinity();
+    double m_peakTime = 0;
     long m_refinements = 0;
-    // The last two step ends' times and |f|.
+    // The last two step ends' times and measured values.
     double m_t[2] = {0, 0}, m_v[2] = {0, 0};
     int m_count = 0;
 };

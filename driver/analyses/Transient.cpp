@@ -82,6 +82,37 @@ void addTorqueLines(const Scene& scene, const ModelSpec& spec, ProbeRole role, c
     }
 }
 
+/// A quantity's extremes of both signs over the run (every integration step,
+/// extremes located inside the steps: PeakTracker).
+struct SignedPeaks {
+    PeakTracker largest, smallest;
+    explicit SignedPeaks(const PeakTracker::Fn& f)
+        : largest(f, PeakTracker::Measure::Largest), smallest(f, PeakTracker::Measure::Smallest) {}
+    void step(Simulation& sim, const SimTK::State& s) {
+        largest.step(sim, s);
+        smallest.step(sim, s);
+    }
+    /// The value of the larger magnitude, with its sign (the largest on a tie).
+    double peak() const { return largest.peak() >= -smallest.peak() ? largest.peak() : smallest.peak(); }
+};
+
+/// peak.NAME (the signed value at the largest |value|), run_max.NAME and
+/// run_min.NAME (the largest and smallest values) of the whole run.
+void addSignedPeaks(const std::string& name, const SignedPeaks& p, const std::string& unit, const std::string& what,
+                    const std::string& shaft, AnalysisResult& result) {
+    const std::string steps = " of the run (every integration step, located inside the steps)";
+    // No step at all (nothing integrated) leaves ±infinity: no peaks then.
+    if (!std::isfinite(p.largest.peak()) || !std::isfinite(p.smallest.peak())) return;
+    result.results.push_back({"peak." + name, p.peak(), unit,
+                              name + " at its largest magnitude" + steps + ", with its sign" + what, shaft});
+    result.results.push_back({"run_max." + name, p.largest.peak(), unit,
+                              "largest (most positive) " + name + steps + what, shaft});
+    result.results.push_back({"run_min." + name, p.smallest.peak(), unit,
+                              "smallest (most negative) " + name + steps + "; of opposite sign to run_max a reversal" +
+                                  what,
+                              shaft});
+}
+
 /// Whether speed_body held its speed over the last hold window before the
 /// first switch-off (or the end), with the numbers the verdicts quote.
 struct HoldCheck {
@@ -203,6 +234,39 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
     return h;
 }
 
+/// The regularisation band of the loads on a shaft: the largest
+/// regularisation speed (ElementSchema::regularisationSpeedKey, registered
+/// in Scene::regularisationSpeeds) of the elements whose bodies include the
+/// shaft, times kCreepFactor. Elements on other shafts are not referred to
+/// it (their band is a speed of their own shaft).
+struct CreepBand {
+    double speed = 0;     ///< |ω| below which a held speed is a creep [rad/s]
+    std::string why;      ///< "crushing.smoothing_speed = 0.01 rad/s, ..."
+};
+/// A sign-regularised law tanh(ω/ωs) reaches 0.9999 of its full value at
+/// 4.95·ωs: inside 5·ωs a drive below the load holds an equilibrium creep
+/// (the same factor scenario.stop_speed must keep above every ωs).
+constexpr double kCreepFactor = 5;
+CreepBand creepBand(const Scene& scene, const ModelSpec& spec, const std::string& body) {
+    const std::string on = ", " + elementsOnBody(spec, body) + ",";
+    CreepBand band;
+    for (const Scene::RegularisationSpeed& r : scene.regularisationSpeeds()) {
+        if (on.find(", " + r.element + ",") == std::string::npos || !(r.speed > 0)) continue;
+        band.speed = std::max(band.speed, kCreepFactor * r.speed);
+        band.why += (band.why.empty() ? "" : ", ") + r.element + "." + r.key + " = " + fmt(r.speed) + " rad/s";
+    }
+    return band;
+}
+/// Whether the held speed lies inside the band (a standstill), and the text.
+bool creeping(const HoldCheck& h, const CreepBand& band) {
+    return h.held && band.speed > 0 && std::abs(h.wHeld) < band.speed;
+}
+std::string creepText(const std::string& body, const CreepBand& band) {
+    return "inside the regularisation band of the loads on " + body + " (|ω| < " + fmt(band.speed) + " rad/s, " +
+           fmt(kCreepFactor) + " times the largest of " + band.why +
+           ": there a regularised law is not the model's law): a creep, a standstill, not a running speed";
+}
+
 /// The starting sequences (Scene::startSequences) in a state, by where they
 /// stand, each as "name: where it stands", joined by "; ".
 struct SequenceLists {
@@ -264,18 +328,23 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
     // (a stalled train rolled back) has made none, whatever its |ω|. Under
     // a periodic load, the last period's mean.
     const double progress = h.direction * h.wHeld;
+    // A held speed inside the loads' regularisation band is a standstill,
+    // whatever ω_ref: without a hinted speed ω_ref is the final speed, so a
+    // creep would otherwise always reach its stall_fraction.
+    const CreepBand band = creepBand(scene, spec, body.name);
+    const bool creep = creeping(h, band);
     if (!running.empty()) {
         result.verdict = "unfinished";
         result.verdictText = "start unfinished: the starting sequence had not finished" + endText + " (" + running +
                              "); " + body.name + " was at " + fmt(h.wEnd) + " rad/s (" + fmt(wRpm) + " rpm, " +
                              (h.held ? "held " : "not held ") + h.holdText +
                              "): no start time or steady values are given; lengthen end_time past the sequence's end";
-    } else if (h.held && waiting.empty() && progress >= fraction * h.wRef) {
+    } else if (h.held && !creep && waiting.empty() && progress >= fraction * h.wRef) {
         result.verdict = "completed";
         result.verdictText = "start completed: " + body.name + " held " + fmt(h.wHeld) + " rad/s (" + fmt(heldRpm) +
                              " rpm) " + h.holdText + ", >= " + fmt(fraction * 100) + " % of ω_ref, " + ref +
                              (finished.empty() ? "" : "; " + finished);
-    } else if (h.held && !h.stillRising) {
+    } else if (h.held && (!h.stillRising || creep)) {
         result.verdict = "stalled";
         // Drive and load torques at the last sample of the window.
         const std::vector<double>* last = nullptr;
@@ -291,7 +360,8 @@ void judgeStart(const Scene& scene, const ModelSpec& spec, const SceneBody& body
         }
         result.verdictText = "start stalled: " + body.name + " held " + fmt(h.wHeld) + " rad/s (" + fmt(heldRpm) +
                              " rpm, " + fmt(100 * progress / h.wRef) + " % of " + ref + ") " + h.holdText +
-                             (waiting.empty() ? ", below the " + fmt(fraction * 100) + " % that counts as started"
+                             (creep ? ", " + creepText(body.name, band)
+                              : waiting.empty() ? ", below the " + fmt(fraction * 100) + " % that counts as started"
                                               : " while the starting sequence waits on the shaft" + endText + " (" +
                                                     waiting + ")") +
                              "; there the drive torque is " + (drive.empty() ? "none" : drive) +
@@ -335,7 +405,9 @@ void judgeRun(const Scene& scene, const ModelSpec& spec, const SceneBody& body, 
                                  ? "the solved steady running"
                                  : "the bodies' given initial state (initial_* keys)";
     const std::string began = "started from " + from + ", " + body.name + " at " + fmt(h.wStart) + " rad/s";
-    const std::string heldText = h.held ? body.name + " held " + fmt(h.wHeld) + " rad/s " + h.holdText
+    const CreepBand band = creepBand(scene, spec, body.name);
+    const std::string heldText = h.held ? body.name + " held " + fmt(h.wHeld) + " rad/s " + h.holdText +
+                                              (creeping(h, band) ? ", " + creepText(body.name, band) : "")
                                         : body.name + " was not held " + h.holdText + " (it moved by up to " +
                                               fmt(h.worst) + " rad/s, ending at " + fmt(h.wEnd) + " rad/s)";
     const std::string ref = "; ω_ref = " + fmt(h.wRef) + " rad/s, " +
@@ -510,7 +582,9 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     if (!drivesOnOneShaft)
         for (std::size_t i : driveProbes)
             drivePeaks.emplace_back([&probes = scene->probes(), i](const SimTK::State& s) { return probes[i].value(s); });
-    std::vector<std::optional<PeakTracker>> peaks(probes.size());
+    // Every coupling and outputs.peaks probe: its largest and smallest value
+    // over the run (run_max., run_min.), the signed peak the larger in size.
+    std::vector<std::optional<SignedPeaks>> peaks(probes.size());
     for (std::size_t i = 0; i < probes.size(); ++i)
         if (probes[i].role == ProbeRole::CouplingTorque ||
             std::find(spec.outputs.peaks.begin(), spec.outputs.peaks.end(), probes[i].name) != spec.outputs.peaks.end())
@@ -543,9 +617,9 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
             statisticsOf.push_back([&probes = scene->probes(), i](const SimTK::State& s) { return probes[i].value(s); });
         }
     WindowStatistics windowStatistics(statisticsOf, tWindowStart, tWindowEnd, periodRule);
-    std::vector<std::pair<NamedQuantity, PeakTracker>> speedPeaks;
+    std::vector<std::pair<NamedQuantity, SignedPeaks>> speedPeaks;
     for (const std::string& name : spec.outputs.peaks)
-        if (const auto q = findQuantity(*scene, name); q && !q->body.empty()) speedPeaks.emplace_back(*q, PeakTracker(q->f));
+        if (const auto q = findQuantity(*scene, name); q && !q->body.empty()) speedPeaks.emplace_back(*q, SignedPeaks(q->f));
     // A charge's fraction of its critical speed (SegmentCharge's
     // NAME.fraction_of_critical), its largest over the trajectory for the
     // near-centrifuging warning. Named by type: a capability would need a
@@ -712,26 +786,22 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         if (scene->probes()[i].role == ProbeRole::CouplingTorque) {
             const std::string name = scene->probes()[i].name;
             const std::string shaft = probeShaft(spec, name);
-            result.results.push_back({"peak." + name, peaks[i]->peak(), "N*m",
-                                      "largest |" + name + "| of the run (every integration step), the torque on " +
-                                          (shaft.empty() ? std::string("its driving shaft") : shaft) +
-                                          " (the driving shaft; the driven shaft carries it times the speed ratio)",
-                                      shaft});
+            const std::string on = ", the torque on " + (shaft.empty() ? std::string("its driving shaft") : shaft) +
+                                   " (the driving shaft; the driven shaft carries it times the speed ratio)";
+            addSignedPeaks(name, *peaks[i], "N*m", on, shaft, result);
         }
     for (const std::string& name : spec.outputs.peaks)
         for (std::size_t i = 0; i < scene->probes().size(); ++i) {
             const Probe& p = scene->probes()[i];
             if (p.name != name || p.role == ProbeRole::CouplingTorque) continue;
-            result.results.push_back({"peak." + name, peaks[i]->peak(), p.unit,
-                                      "largest |" + name + "| of the run (outputs.peaks; every integration step)"});
+            addSignedPeaks(name, *peaks[i], p.unit, " (outputs.peaks)", "", result);
             result.results.push_back(
                 {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
         }
     addSteadyStatistics(*scene, speedBody, windowStatistics, kSteadyQuantities, statisticsNamed, periodRule,
                         periodWhy, windowText, reached, steady, at, result);
     for (const auto& [q, tracker] : speedPeaks) {
-        result.results.push_back({"peak." + q.name, tracker.peak(), q.unit,
-                                  "largest |" + q.name + "| of the run (outputs.peaks; every integration step)"});
+        addSignedPeaks(q.name, tracker, q.unit, " (outputs.peaks)", "", result);
         result.results.push_back({"final." + q.name, q.f(steady), q.unit, q.name + " " + at + " (outputs.peaks)"});
     }
     // Above 90 % of critical speed anywhere on the trajectory (maxima

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -93,6 +94,74 @@ TEST(StartVerdict, SweepRecordsTheVerdictPerPointAndContinues) {
     std::getline(table, row1);
     EXPECT_NE(row0.find(",ok,"), std::string::npos) << row0;
     EXPECT_NE(row1.find(",stalled,"), std::string::npos) << row1;
+}
+
+// A drive below the load with no hinted running speed: ω_ref is the final
+// speed itself, so the shaft's creep inside the loads' sign regularisation
+// (tanh(ω/ωs), ωs = 0.01 rad/s) held "100 % of ω_ref" and was called a
+// completed start. 10 N*m against a crushing load of mean 100 N*m (at most
+// 100 + 30 + 80 = 210 N*m, at least 100 − 30 − 80 < 0 but never passed:
+// the shaft starts at angle 0 where it is 210 N*m) balances at
+// ω = ωs·atanh(10/210) ≈ 0.000477 rad/s.
+std::string writeCreepModel(const std::string& name, const std::string& drive, const std::string& extra,
+                            const std::string& scenario) {
+    const std::string path = ::testing::TempDir() + "/" + name + ".yaml";
+    std::ofstream(path) << "format_version: 1\nname: creep\nbodies:\n"
+                           "  - {name: b, inertia: 1 kg*m^2, joint: {type: pin}}\nelements:\n"
+                           "  - {type: AppliedTorque, name: drive, body: b, torque: "
+                        << drive
+                        << "}\n"
+                           "  - {type: AngleLoad, name: crushing, bodies: [b], shape: fourier, mean_torque: 100 N*m, "
+                           "cosine_amplitudes: [30 N*m, 80 N*m]}\n"
+                        << extra << "scenario: {analysis: transient, " << scenario << "}\n";
+    return path;
+}
+
+TEST(StartVerdict, ACreepInsideTheLoadsRegularisationBandIsAStallWithoutAHintedSpeed) {
+    const AnalysisResult r = runModelFile(writeCreepModel("creep_stall", "10 N*m", "", "end_time: 0.1 s"), {});
+    EXPECT_EQ(r.verdict, "stalled") << r.verdictText;
+    EXPECT_NE(r.verdictText.find("inside the regularisation band of the loads on b (|ω| < 0.05 rad/s"),
+              std::string::npos)
+        << r.verdictText;
+    EXPECT_NE(r.verdictText.find("crushing.smoothing_speed = 0.01 rad/s"), std::string::npos) << r.verdictText;
+    EXPECT_NE(r.verdictText.find("drive.torque = 10 N*m"), std::string::npos) << r.verdictText;
+    EXPECT_NE(r.verdictText.find("crushing.torque = "), std::string::npos) << r.verdictText;
+    ASSERT_NE(r.find("speed_at_end"), nullptr);
+    EXPECT_NEAR(r.find("speed_at_end")->value, 0.01 * std::atanh(10.0 / 210.0), 0.05 * 0.01 * std::atanh(10.0 / 210.0));
+    EXPECT_EQ(r.find("steady_speed"), nullptr);
+    EXPECT_EQ(r.find("start_time"), nullptr);
+}
+
+// The same shaft driven past the load (300 N*m > 210 N*m) with a viscous
+// drag 10 N*m*s/rad: it runs up to about (300 − 100)/10 = 20 rad/s, far
+// above every band, and holds it (period means over whole revolutions):
+// with no hinted speed a held final speed is a completed start.
+TEST(StartVerdict, TheSameShaftDrivenPastTheLoadToAHeldSpeedAboveTheBandCompletes) {
+    const std::string drag = "  - {type: ResistanceTorque, name: drag, body: b, viscous_coefficient: 10 N*m*s/rad}\n";
+    const AnalysisResult r =
+        runModelFile(writeCreepModel("creep_run", "300 N*m", drag, "end_time: 3 s, hold_time: 1 s"), {});
+    EXPECT_EQ(r.verdict, "completed") << r.verdictText;
+    EXPECT_EQ(r.verdictText.find("regularisation band"), std::string::npos) << r.verdictText;
+    ASSERT_NE(r.find("steady_speed"), nullptr);
+    EXPECT_NEAR(r.find("steady_speed")->value, 20.0, 0.5);
+    // The drag alone at 10 N*m, the rest as before: the creep stalls.
+    const AnalysisResult creep =
+        runModelFile(writeCreepModel("creep_drag", "10 N*m", drag, "end_time: 3 s, hold_time: 1 s"), {});
+    EXPECT_EQ(creep.verdict, "stalled") << creep.verdictText;
+    EXPECT_NE(creep.verdictText.find("drag.smoothing_speed"), std::string::npos) << creep.verdictText;
+}
+
+// A drive that hints its rated speed keeps its verdicts: the bench's start
+// completes far above the band, the 60 N*m load stalls it (there below the
+// stall fraction of the hinted speed, and also inside the band).
+TEST(StartVerdict, AHintedSpeedModelKeepsItsVerdicts) {
+    const AnalysisResult ok = runModelFile(kModels + "start_bench_dol.yaml", {});
+    EXPECT_EQ(ok.verdict, "completed") << ok.verdictText;
+    EXPECT_EQ(ok.verdictText.find("regularisation band"), std::string::npos) << ok.verdictText;
+    EXPECT_NE(ok.verdictText.find("the drives' running speed"), std::string::npos) << ok.verdictText;
+    const AnalysisResult stall = runModelFile(
+        kModels + "start_bench_dol.yaml", {{"elements.load.constant_torque", "60 N*m"}, {"scenario.end_time", "1 s"}});
+    EXPECT_EQ(stall.verdict, "stalled") << stall.verdictText;
 }
 
 TEST(StartValidation, EveryStartCasePasses) {

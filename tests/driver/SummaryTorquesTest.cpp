@@ -5,7 +5,10 @@
 // shaft are summed under the one name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 
 #include "driver/ModelFile.h"
 #include "driver/analyses/Analysis.h"
@@ -56,6 +59,92 @@ TEST(SummaryTorques, LoadsOnOneShaftAreSummedUnderOneName) {
     EXPECT_NEAR(r.find("resistance_torque")->value, 14.0, 1e-9);
     EXPECT_EQ(r.find("resistance_torque")->referredTo, "a");
     EXPECT_EQ(r.find("resistance_torque.load_a.torque"), nullptr);
+}
+
+
+// Signed peaks and the reversal (run_max., run_min.): two inertias J1 = 1,
+// J2 = 3 kg*m^2 joined by a shaft k = 1e4 N*m/rad, c = 10 N*m*s/rad, a step
+// torque T = 100 N*m on J1 and J2 turning 2 rad/s faster at t = 0. With
+// θ = φ1 − φ2, J* = J1·J2/(J1 + J2):
+//   θ'' + (c/J*)·θ' + (k/J*)·θ = T/J1,  θ(0) = 0, θ'(0) = v0 = −2 rad/s,
+// and the shaft torque M = k·θ + c·θ' oscillates about T·J2/(J1 + J2) = 75 N*m:
+//   θ = θs + e^(−σt)·(A cos ωd t + B sin ωd t), θs = T·J*/(J1·k), A = −θs,
+//   B = (v0 + σ·A)/ωd, σ = c/(2J*), ωd = sqrt(k/J* − σ²);
+//   M = k·θs + e^(−σt)·(P cos ωd t + Q sin ωd t),
+//   P = k·A + c·(ωd·B − σ·A), Q = k·B − c·(σ·B + ωd·A),
+// extreme where tan(ωd t) = (ωd·Q − σ·P)/(σ·Q + ωd·P), every π/ωd.
+struct TwoMassClosedForm {
+    double J1 = 1, J2 = 3, k = 1e4, c = 10, T = 100, v0 = -2;
+    double Js() const { return J1 * J2 / (J1 + J2); }
+    double sigma() const { return c / (2 * Js()); }
+    double wd() const { return std::sqrt(k / Js() - sigma() * sigma()); }
+    double thetaS() const { return T * Js() / (J1 * k); }
+    double P() const {
+        const double A = -thetaS(), B = (v0 + sigma() * A) / wd();
+        return k * A + c * (wd() * B - sigma() * A);
+    }
+    double Q() const {
+        const double A = -thetaS(), B = (v0 + sigma() * A) / wd();
+        return k * B - c * (sigma() * B + wd() * A);
+    }
+    double torque(double t) const {
+        return k * thetaS() + std::exp(-sigma() * t) * (P() * std::cos(wd() * t) + Q() * std::sin(wd() * t));
+    }
+    /// {largest, smallest} torque over [0, end]: the stationary points and the ends.
+    std::pair<double, double> extremes(double end) const {
+        const double phase = std::atan2(wd() * Q() - sigma() * P(), sigma() * Q() + wd() * P());
+        double hi = std::max(torque(0), torque(end)), lo = std::min(torque(0), torque(end));
+        for (int n = -2; n < 1000; ++n) {
+            const double t = (phase + n * M_PI) / wd();
+            if (t < 0 || t > end) continue;
+            hi = std::max(hi, torque(t));
+            lo = std::min(lo, torque(t));
+        }
+        return {hi, lo};
+    }
+};
+
+std::string twoMassChain(const std::string& interval) {
+    return "format_version: 1\n"
+           "name: two mass\n"
+           "bodies:\n"
+           "  - {name: a, inertia: 1 kg*m^2, joint: {type: pin}, initial_speed: 0 rad/s}\n"
+           "  - {name: b, inertia: 3 kg*m^2, joint: {type: pin}, initial_speed: 2 rad/s}\n"
+           "elements:\n"
+           "  - {type: AppliedTorque, name: drive, body: a, torque: 100 N*m}\n"
+           "  - {type: TorsionalCoupling, name: shaft, bodies: [a, b], stiffness: 1e4 N*m/rad, damping: 10 N*m*s/rad}\n"
+           "scenario: {analysis: transient, initial_state: file, end_time: 0.3 s}\n"
+           "outputs: {sample_interval: " + interval + "}\n";
+}
+
+TEST(SummaryTorques, CouplingPeakCarriesItsSignAndRunMaxMinAreTheClosedFormsExtremes) {
+    const TwoMassClosedForm cf;
+    const auto [hi, lo] = cf.extremes(0.3);
+    // The closed form overshoots both ways: +226.65 and −106.87 N*m.
+    ASSERT_GT(hi, 200);
+    ASSERT_LT(lo, -100);
+    for (const std::string interval : {"0.02 s", "0.0005 s"}) {
+        const AnalysisResult r = runAnalysis(readModelText(twoMassChain(interval), "two.yaml", defaultModelReader()));
+        ASSERT_NE(r.find("run_max.shaft.torque"), nullptr) << interval;
+        ASSERT_NE(r.find("run_min.shaft.torque"), nullptr) << interval;
+        ASSERT_NE(r.find("peak.shaft.torque"), nullptr) << interval;
+        // Integrator accuracy 1e-6 (the default): within 1e-4 of the swing.
+        EXPECT_NEAR(r.find("run_max.shaft.torque")->value, hi, 1e-4 * (hi - lo)) << interval;
+        EXPECT_NEAR(r.find("run_min.shaft.torque")->value, lo, 1e-4 * (hi - lo)) << interval;
+        EXPECT_EQ(r.find("peak.shaft.torque")->value, r.find("run_max.shaft.torque")->value) << interval;
+        EXPECT_EQ(r.find("run_min.shaft.torque")->referredTo, "a");
+    }
+    // The reversal the larger: J2 20 rad/s ahead, the first (negative) lobe dominates
+    // and the signed peak is negative.
+    TwoMassClosedForm fast;
+    fast.v0 = -20;
+    const auto [fhi, flo] = fast.extremes(0.3);
+    ASSERT_GT(-flo, fhi);
+    std::string model = twoMassChain("0.02 s");
+    model.replace(model.find("initial_speed: 2 rad/s"), 22, "initial_speed: 20 rad/s");
+    const AnalysisResult r = runAnalysis(readModelText(model, "two.yaml", defaultModelReader()));
+    EXPECT_NEAR(r.find("peak.shaft.torque")->value, flo, 1e-4 * (fhi - flo));
+    EXPECT_NEAR(r.find("run_max.shaft.torque")->value, fhi, 1e-4 * (fhi - flo));
 }
 
 }  // namespace
