@@ -4,7 +4,8 @@
     import milldyn
     model = milldyn.Model("models/burr_mill_5p5kW_idle.yaml",
                           set={"elements.grinding.constant_torque": "20 N*m"})
-    result = model.run()
+    result = model.run()                 # a stalled start warns StartNotCompletedWarning
+    result.verdict, result.verdict.text  # "ran", the sentence `milldyn run` prints
     result.summary["runout_time"]        # 1.12... s  (a float with .unit)
     result.table["millstone.speed"]      # numpy array; result.table.units[...]
     df = result.to_pandas()              # columns without [unit]; df.attrs["units"]
