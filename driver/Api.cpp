@@ -28,6 +28,23 @@ ModelSpec readModel(const std::string& path, const std::vector<Override>& overri
     return readModelFile(path, defaultModelReader(), overrides);
 }
 
+VerdictKind verdictKind(const std::string& verdict) {
+    if (verdict == "stalled") return VerdictKind::Stalled;
+    if (verdict == "unfinished") return VerdictKind::Unfinished;
+    return VerdictKind::Done;
+}
+
+const char* verdictKindName(VerdictKind kind) {
+    switch (kind) {
+        case VerdictKind::Done: return "done";
+        case VerdictKind::Unfinished: return "unfinished";
+        case VerdictKind::Stalled: return "stalled";
+    }
+    return "?";
+}
+
+int runExitCode(const AnalysisResult& result) { return verdictKind(result.verdict) == VerdictKind::Stalled ? 3 : 0; }
+
 RunOutcome runModel(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     RunOutcome run;
     const auto start = std::chrono::steady_clock::now();

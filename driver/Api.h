@@ -37,6 +37,23 @@ struct RunOutcome {
 /// not finite. Writes nothing.
 RunOutcome runModel(const ModelSpec& spec, const ProgressFn& progress = {}, const SampleObserver& observer = {});
 
+/// What a run's verdict (AnalysisResult::verdict) says about what was asked:
+/// one rule for `milldyn run`'s exit code, a sweep point's status and the
+/// Python module's Result.verdict (its warning and on_failure).
+///   Done:       no verdict (the analysis judges no start), "completed",
+///               "steady_held", "ran"
+///   Unfinished: "unfinished": a start, a run-out or a starting sequence
+///               not finished by end_time (no start time or steady values)
+///   Stalled:    "stalled": the drive cannot take the load past a speed
+enum class VerdictKind { Done, Unfinished, Stalled };
+VerdictKind verdictKind(const std::string& verdict);
+/// "done", "unfinished", "stalled".
+const char* verdictKindName(VerdictKind kind);
+/// `milldyn run`'s exit code for a run that produced its result: 3 for a
+/// stalled start (its outputs are written), 0 otherwise (an unfinished start
+/// prints its verdict and exits 0: the run did what it was told).
+int runExitCode(const AnalysisResult& result);
+
 /// Thrown out of a run that was asked to stop (CancelFlag).
 class RunCancelled : public std::runtime_error {
 public:

@@ -334,7 +334,7 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
     // its outputs are written, the verdict says why, exit 3. An unfinished
     // start (end_time too short) prints its verdict and no steady values,
     // and exits 0: the run did what it was told.
-    const int code = result.verdict == "stalled" ? 3 : 0;
+    const int code = runExitCode(result);  // one rule with the Python module (driver/Api.h)
     if (a.quiet) {
         if (code) err << "milldyn: " << result.verdictText << "\n";
         return code;

@@ -127,8 +127,7 @@ Json runPoint(const SweepPlan& plan, const SweepOptions& options, const Json& sw
         // A start that stalled or did not finish (or a run-out that did not
         // end) is recorded as such; a run from a given state that ran or
         // held its speed is ok.
-        const bool started =
-            r.verdict.empty() || r.verdict == "completed" || r.verdict == "steady_held" || r.verdict == "ran";
+        const bool started = verdictKind(r.verdict) == VerdictKind::Done;  // one rule with run (driver/Api.h)
         j["status"] = started ? "ok" : r.verdict;
         j["diagnostic"] = started ? "" : r.verdictText;
         j["results"] = results;

@@ -275,6 +275,12 @@ PYBIND11_MODULE(_milldyn, m) {
         .def("results", [](const RunHandle& r) { return scalars(r.run.result.results); })
         .def("derived", [](const RunHandle& r) { return scalars(r.run.result.derived); })
         .def("notes", [](const RunHandle& r) { return r.run.result.notes; })
+        // (verdict, text, kind, the CLI's exit code): kind and exit code
+        // from driver/Api's one rule (verdictKind, runExitCode).
+        .def("verdict", [](const RunHandle& r) {
+            const auto& x = r.run.result;
+            return py::make_tuple(x.verdict, x.verdictText, verdictKindName(verdictKind(x.verdict)), runExitCode(x));
+        })
         .def("statistics", [](const RunHandle& r) {
             const auto& s = r.run.result.statistics;
             py::dict d;
@@ -439,6 +445,11 @@ PYBIND11_MODULE(_milldyn, m) {
         py::list out;
         for (const auto& kind : analysisKinds()) out.append(schemaDict(*findAnalysisSchema(kind)));
         return out;
+    });
+    // The reader's "did you mean" (ElementSchema.h): the candidate closest to
+    // `word`, or "" if none is close enough to help.
+    m.def("nearest_name", [](const std::string& word, const std::vector<std::string>& candidates) {
+        return nearestName(word, candidates);
     });
     m.def("load_plugin", [](const std::string& path) { loadPlugin(path); });
     m.def("to_si", [](const std::string& text, const std::string& unit) {

@@ -4,7 +4,8 @@
     import milldyn
     model = milldyn.Model("models/burr_mill_5p5kW_idle.yaml",
                           set={"elements.grinding.constant_torque": "20 N*m"})
-    result = model.run()
+    result = model.run()                 # a stalled start warns StartNotCompletedWarning
+    result.verdict, result.verdict.text  # "ran", the sentence `milldyn run` prints
     result.summary["runout_time"]        # 1.12... s  (a float with .unit)
     result.table["millstone.speed"]      # numpy array; result.table.units[...]
     df = result.to_pandas()              # columns without [unit]; df.attrs["units"]
@@ -19,12 +20,12 @@ a CancelToken stops one from any thread.
 # milldyn's own names only (issue 29 item 5).
 import collections as _collections
 import csv as _csv
-import difflib as _difflib
 import os as _os
 import shutil as _shutil
 import sys as _sys
 import tempfile as _tempfile
 import threading as _threading
+import warnings as _warnings
 
 # Plugin libraries (plugins=[...]) resolve the registry's symbols from the
 # module, as they do from the milldyn executable: load it RTLD_GLOBAL.
@@ -36,22 +37,74 @@ finally:
     _sys.setdlopenflags(_flags)
 
 from .errors import (AnalysisFailed, Cancelled, MilldynError, ModelError, ModelFileNotFound,  # noqa: E402
-                     OutputFailed, UnitError)
+                     OutputFailed, StartNotCompleted, StartNotCompletedWarning, UnitError)
 
 import numpy as _np  # noqa: E402
 
 __version__ = _core.__version__
 CancelToken = _core.CancelToken
 
-__all__ = ["Model", "Result", "Table", "Value", "Matrix", "CancelToken", "sweep", "validate", "elements",
+__all__ = ["Model", "Result", "Table", "Value", "Matrix", "Verdict", "CancelToken", "sweep", "validate", "elements",
            "analyses", "load_plugin", "to_si", "quantity", "ModelError", "ModelFileNotFound", "AnalysisFailed",
-           "OutputFailed", "Cancelled", "UnitError", "MilldynError"]
+           "OutputFailed", "Cancelled", "UnitError", "MilldynError", "StartNotCompleted", "StartNotCompletedWarning"]
 
 
 def _unit_factor(unit):
     """A unit as a factor of a product: parenthesised when it holds an
     operator (``N*m`` -> ``(N*m)``)."""
     return unit if all(c not in unit for c in "*/^ ") else "(%s)" % unit
+
+
+# The unit a designer reads for each dimension a product or quotient of
+# Values may have (docs/python.md, "Units"): coherent SI units, so a value
+# keeps its number. A torque times an angular speed is a power (W) and a
+# torque times an angle a work (J): Units.h keeps the radian in the
+# dimension, these names drop it, as a mechanical power does. The one
+# dimension shared by two common units, kg*m^2/s^2 (a torque N*m, an energy
+# J), is named after its factors: N*m when one holds a force or a torque
+# (N), J when one holds a power or an energy (W, J), else left composed.
+_PREFERRED_UNITS = ("kg*m^2", "rad/s", "rad/s^2", "W", "N", "N*m/rad", "N*m*s/rad", "N*s/m", "N/m", "Pa", "m/s",
+                    "m/s^2", "rad", "m", "s", "kg", "A", "1/s", "m^2", "m^3", "kg/m^3")
+_PREFERRED_ALIASES = {"N*m*rad/s": "W", "N*m*rad": "J"}
+_preferred_by_dimension = None
+
+
+def _dimension(unit):
+    """(SI value of 1 ``unit``, its dimension's canonical text); "1" is
+    dimensionless. UnitError if it does not parse."""
+    if unit in ("", "1"):
+        return 1.0, "1"
+    return _core.parse_quantity("1 " + unit)
+
+
+def _preferred_unit(dimension, factors):
+    global _preferred_by_dimension
+    if _preferred_by_dimension is None:
+        table = {_dimension(u)[1]: u for u in _PREFERRED_UNITS}
+        table.update({_dimension(u)[1]: name for u, name in _PREFERRED_ALIASES.items()})
+        _preferred_by_dimension = table
+    if dimension == "1":
+        return "1"
+    if dimension == _dimension("N*m")[1]:
+        if any("N" in f for f in factors):
+            return "N*m"
+        if any("W" in f or "J" in f for f in factors):
+            return "J"
+        return None
+    return _preferred_by_dimension.get(dimension)
+
+
+def _composed(value, unit, factors):
+    """A product's or quotient's Value: in the preferred unit of its
+    dimension (its number scaled to it), else in the composed unit."""
+    try:
+        scale, dimension = _dimension(unit)
+    except MilldynError:
+        return Value(value, unit)
+    preferred = _preferred_unit(dimension, factors)
+    if preferred is None:
+        return Value(value, unit)
+    return Value(value * scale, preferred)
 
 
 class Value(float):
@@ -100,9 +153,24 @@ class Value(float):
             return NotImplemented
         return Value(self._same_unit(other, "difference") - float(self), self.unit)
 
+    def to(self, unit):
+        """This value in ``unit`` (a Value): ``summary["power"].to("kW")``;
+        UnitError for a unit of another dimension."""
+        unit = _utf8(unit, "unit", UnitError)
+        scale, dimension = _dimension(self.unit)
+        target_scale, target = _dimension(unit)
+        if dimension != target:
+            raise UnitError("%r cannot be given in %s: its dimension is %s, that of %s is %s"
+                            % (self, unit, dimension, unit, target))
+        return Value(float(self) * scale / target_scale, unit, self.doc)
+
     def __mul__(self, other):
         if isinstance(other, Value):
-            return Value(float(self) * float(other), "%s*%s" % (_unit_factor(self.unit), _unit_factor(other.unit)))
+            if self.unit in ("", "1") or other.unit in ("", "1"):
+                unit = other.unit if self.unit in ("", "1") else self.unit
+                return Value(float(self) * float(other), unit or "1")
+            return _composed(float(self) * float(other), "%s*%s" % (_unit_factor(self.unit), _unit_factor(other.unit)),
+                             (self.unit, other.unit))
         if not isinstance(other, (int, float, _np.integer, _np.floating)) or isinstance(other, bool):
             return NotImplemented
         return Value(float(self) * float(other), self.unit)
@@ -111,8 +179,13 @@ class Value(float):
 
     def __truediv__(self, other):
         if isinstance(other, Value):
-            unit = "1" if other.unit == self.unit else "%s/%s" % (_unit_factor(self.unit), _unit_factor(other.unit))
-            return Value(float(self) / float(other), unit)
+            if other.unit == self.unit:
+                return Value(float(self) / float(other), "1")
+            if other.unit in ("", "1"):
+                return Value(float(self) / float(other), self.unit)
+            top = "1" if self.unit in ("", "1") else _unit_factor(self.unit)
+            return _composed(float(self) / float(other), "%s/%s" % (top, _unit_factor(other.unit)),
+                             (self.unit, other.unit))
         if not isinstance(other, (int, float, _np.integer, _np.floating)) or isinstance(other, bool):
             return NotImplemented
         return Value(float(self) / float(other), self.unit)
@@ -144,21 +217,86 @@ class Value(float):
 
 class Matrix(_collections.namedtuple("Matrix", "values unit")):
     """One matrix of a linear model (``Result.matrices[name]``): ``values``
-    a square numpy array (rows and columns in ``Result.dof_names`` order;
-    A is twice as large: positions, then speeds) and ``unit`` the unit of
-    its entries ("kg*m^2" for M, "N*m*s/rad" for C, "N*m/rad" for K; A is
-    labelled "1/s" though its blocks are 1, 1/s^2 and 1/s: docs/python.md).
-    Unpacks as ``values, unit``."""
+    a square numpy array and ``unit`` the unit of its entries ("kg*m^2" for
+    M, "N*m*s/rad" for C, "N*m/rad" for K; A is labelled "1/s" though its
+    blocks are 1, 1/s^2 and 1/s: docs/python.md). ``rows`` and ``columns``
+    label its rows and columns: the degrees of freedom (``Result.dof_names``)
+    for M, C, K; ``DOF.angle`` then ``DOF.speed`` for A (and the other
+    first-order matrices of that size); None where the result names no
+    labels (A_with_motor_states: the motors' flux states follow). Unpacks as
+    ``values, unit``; ``to_pandas()`` is a labelled DataFrame."""
 
-    __slots__ = ()
+    rows = None
+    columns = None
+
+    def __new__(cls, values, unit, rows=None, columns=None):
+        self = super().__new__(cls, values, unit)
+        self.rows = None if rows is None else list(rows)
+        self.columns = None if columns is None else list(columns)
+        return self
+
+    @property
+    def shape(self):
+        return self.values.shape
 
     def __repr__(self):
-        return "<milldyn.Matrix %dx%d [%s]>" % (self.values.shape[0], self.values.shape[1] if self.values.ndim > 1 else 1,
-                                               self.unit)
+        shape = "%dx%d" % (self.values.shape[0], self.values.shape[1] if self.values.ndim > 1 else 1)
+        labels = ""
+        if self.rows is not None:
+            labels = ", rows %s%s" % (", ".join(self.rows[:4]), ", ..." if len(self.rows) > 4 else "")
+        return "<milldyn.Matrix %s [%s]%s>" % (shape, self.unit, labels)
+
+    def to_pandas(self):
+        """A pandas DataFrame with the row and column labels (needs pandas);
+        the unit in ``df.attrs["unit"]``."""
+        import pandas
+        df = pandas.DataFrame(self.values, index=self.rows, columns=self.columns)
+        df.attrs["unit"] = self.unit
+        return df
+
+
+def _matrix_labels(values, dof_names):
+    """Row and column labels of a linear model's matrix: the DOF names for
+    an n x n matrix, DOF.angle then DOF.speed for a 2n x 2n one (positions,
+    then speeds, as A = [[0, I], [-M^-1 K, -M^-1 C]]), else None."""
+    n = len(dof_names)
+    if n and values.shape == (n, n):
+        return list(dof_names)
+    if n and values.shape == (2 * n, 2 * n):
+        return ["%s.angle" % d for d in dof_names] + ["%s.speed" % d for d in dof_names]
+    return None
+
+
+class Verdict(str):
+    """A run's verdict as the CLI prints it: the string itself is its name
+    ("completed", "stalled", "unfinished", "steady_held", "ran"; "" where
+    the analysis judges no start, e.g. a linearize run), ``text`` the CLI's
+    sentence with the numbers (``verdict: ...`` of ``milldyn run``),
+    ``kind`` "done" | "unfinished" | "stalled", ``ok`` whether the run did
+    what was asked (kind "done"), ``exit_code`` the CLI's (3 for a stall).
+    Kind and exit code come from driver/Api (verdictKind, runExitCode), the
+    rule the CLI and the sweeps use."""
+
+    def __new__(cls, name, text="", kind="done", exit_code=0):
+        self = super().__new__(cls, name)
+        self.text, self.kind, self.exit_code = text, kind, exit_code
+        return self
+
+    @property
+    def ok(self):
+        return self.kind == "done"
+
+    def __repr__(self):
+        if not self:
+            return "<milldyn.Verdict none (the analysis judges no start)>"
+        return "<milldyn.Verdict %s: %s>" % (str(self), self.text)
+
+    def __reduce__(self):
+        return (Verdict, (str(self), self.text, self.kind, self.exit_code))
 
 
 class _Named(dict):
-    """A dict whose missing keys raise KeyError with the nearest names."""
+    """A dict whose missing keys raise KeyError with the nearest name."""
 
     what = "name"
 
@@ -166,11 +304,36 @@ class _Named(dict):
         raise KeyError(_unknown(key, list(self), self.what))
 
 
+def _named(mapping, what):
+    """``mapping`` as a dict whose unknown keys raise KeyError naming
+    ``what`` and the nearest key."""
+    out = _Named(mapping)
+    out.what = what
+    return out
+
+
+def _encodable(text):
+    try:
+        text.encode("utf-8")
+        return True
+    except UnicodeEncodeError:
+        return False
+
+
+def _nearest(word, names):
+    if not _encodable(word):
+        return ""
+    return _core.nearest_name(word, [n for n in names if _encodable(n)])
+
+
 def _unknown(key, names, what):
-    near = _difflib.get_close_matches(str(key), [str(n) for n in names], n=3, cutoff=0.5)
+    """The CLI reader's "did you mean" (its nearestName, through the core)
+    for a name that is not among ``names``; the first known ones when none
+    is close."""
+    near = _nearest(str(key), [str(n) for n in names])
     text = "unknown %s %r" % (what, key)
     if near:
-        text += " (did you mean %s?)" % " or ".join(repr(n) for n in near)
+        text += " (did you mean %r?)" % near
     elif names:
         text += " (%d known: %s%s)" % (len(names), ", ".join(repr(n) for n in list(names)[:6]),
                                        ", ..." if len(names) > 6 else "")
@@ -259,8 +422,8 @@ class Table:
     def __init__(self, name, names, units, columns):
         self.name = name
         self.names = list(names)
-        self.units = dict(zip(self.names, units))
-        self.columns = dict(zip(self.names, columns))
+        self.units = _named(zip(self.names, units), "column of table %s" % name)
+        self.columns = _named(zip(self.names, columns), "column of table %s" % name)
 
     def __getitem__(self, name):
         try:
@@ -304,6 +467,23 @@ def _table(d):
     return Table(d["name"], d["names"], d["units"], d["columns"])
 
 
+_REPR_RESULTS = 4
+
+
+def _wrap(parts, lead="", width=100):
+    """Comma-joined ``parts`` on lines of about ``width`` characters, each
+    indented by two spaces (the first after ``lead``)."""
+    lines, line = [], "  " + lead
+    for k, part in enumerate(parts):
+        if k and len(line) + len(part) + 2 > width:
+            lines.append(line + ",")
+            line = "    "
+        elif k:
+            line += ", "
+        line += part
+    return lines + [line]
+
+
 class Result:
     """What one run produced.
 
@@ -311,14 +491,17 @@ class Result:
     - ``tables``: every table by name (the main one and the further ones);
     - ``summary``: the named results, name -> Value (a float with ``.unit``);
     - ``derived``: values elements derive from their parameters;
-    - ``notes``: what happened, in words (the verdicts);
+    - ``verdict``: the run's verdict (a Verdict: "completed", "stalled",
+      "unfinished", ...; ``.text`` the CLI's sentence, ``.ok``, ``.exit_code``);
+    - ``notes``: what happened, in words;
     - ``statistics``: integrator, accuracy, steps, realizations, wall time;
     - ``dof_names``, ``matrices``: a linear model's degrees of freedom and
-      its matrices, name -> Matrix(values, unit) (M, C, K, A: docs/python.md);
+      its matrices, name -> Matrix(values, unit, rows, columns) (M, C, K, A:
+      docs/python.md);
     - ``files``: what was written (``run(out=...)`` or ``write()``).
 
-    An unknown name in ``summary``, ``derived``, ``tables``, ``matrices`` or
-    a Table raises KeyError with the nearest names.
+    An unknown name in ``summary``, ``derived``, ``tables``, ``matrices``,
+    ``statistics`` or a Table raises KeyError with the nearest name.
     """
 
     def __init__(self, model, handle):
@@ -331,19 +514,43 @@ class Result:
             self.tables[t["name"]] = _table(t)
         self.summary = _Results((n, Value(v, u, doc)) for n, v, u, doc in handle.results())
         self.derived = _Results((n, Value(v, u, doc)) for n, v, u, doc in handle.derived())
+        self.verdict = Verdict(*handle.verdict())
         self.notes = list(handle.notes())
-        self.statistics = dict(handle.statistics())
+        self.statistics = _named(handle.statistics(), "statistic")
         self.dof_names, matrices = handle.linear_model()
-        self.matrices = _Matrices((n, Matrix(values, unit)) for n, (values, unit) in matrices.items())
+        self.matrices = _Matrices()
+        for n, (values, unit) in matrices.items():
+            labels = _matrix_labels(values, self.dof_names)
+            self.matrices[n] = Matrix(values, unit, labels, labels)
         self.files = []
         self.warning = ""
 
     def __repr__(self):
-        # Short: a few results; print(result.summary) shows them all.
+        # A few lines: the verdict, the first results (the analysis's
+        # headline ones), the tables' sizes; print(result.summary) and
+        # result.verdict.text give everything.
+        lines = ["<milldyn.Result %s of %r" % (self.analysis, self.model.name)]
+        if self.verdict:
+            text = self.verdict.text if len(self.verdict.text) <= 110 else self.verdict.text[:107] + "..."
+            lines.append("  verdict: %s" % text)
         items = list(self.summary.items())
-        shown = ", ".join("%s=%r" % kv for kv in items[:4])
-        more = ", ... (%d results)" % len(items) if len(items) > 4 else ""
-        return "<milldyn.Result %s of %s, %d rows: %s%s>" % (self.analysis, self.model.name, len(self.table), shown, more)
+        shown = [("%s = %.6g %s" % (n, v, v.unit)).rstrip() if v.unit not in ("", "1") else "%s = %.6g" % (n, v)
+                 for n, v in items[:_REPR_RESULTS]]
+        if items:
+            shown[-1] += " (%d of %d results)" % (len(shown), len(items))
+        lines += _wrap(shown) if items else ["  no results"]
+        tables = ["%s %dx%d" % (n, len(t), len(t.names)) for n, t in list(self.tables.items())[:4]]
+        if len(self.tables) > 4:
+            tables.append("%d more" % (len(self.tables) - 4))
+        lines += _wrap(tables, "tables: ")
+        extra = []
+        if self.matrices:
+            extra.append("matrices: " + ", ".join(self.matrices))
+        if self.notes:
+            extra.append("%d note%s" % (len(self.notes), "" if len(self.notes) == 1 else "s"))
+        if extra:
+            lines.append("  " + "; ".join(extra))
+        return "\n".join(lines) + ">"
 
     def to_pandas(self):
         """The main table as a pandas DataFrame (units in ``df.attrs``)."""
@@ -425,23 +632,51 @@ class Model:
         return "<milldyn.Model %s (%s): %s>" % (self.name, self.path, self.analysis)
 
     def info(self):
-        """What ``milldyn info`` shows, as a dict."""
-        return _core.describe(self._spec)
+        """What ``milldyn info`` shows, as a dict (an unknown field raises
+        KeyError with the nearest name)."""
+        return _named(_core.describe(self._spec), "info field")
 
     def run(self, out=None, set=None, scenario=None, preset=None, integrator=None, accuracy=None,
-            end_time=None, cancel=None):
+            end_time=None, cancel=None, on_failure="warn"):
         """Runs the model's analysis and returns a Result. Nothing is written
         unless ``out`` names a directory (then the CLI's files go there).
         ``set``, ``scenario``, ``preset``, ``integrator``, ``accuracy`` and
         ``end_time`` add to the model's overrides for this run only.
-        ``cancel``: a CancelToken another thread may set."""
+        ``cancel``: a CancelToken another thread may set.
+
+        ``on_failure`` says what a run that did not do what was asked does
+        (its verdict ``stalled``, where the CLI exits 3, or ``unfinished``):
+        "warn" (default) warns StartNotCompletedWarning with the verdict's
+        text and returns the Result; "raise" raises StartNotCompleted
+        carrying the Result (its files written first when ``out`` is
+        given, as the CLI writes them); "ignore" only sets
+        ``result.verdict``."""
+        _check_on_failure(on_failure)
         extra = _overrides(set, scenario, preset, integrator=integrator, accuracy=accuracy, end_time=end_time)
         spec = _read_model(self.path, self.overrides + extra) if extra else self._spec
         on_main = _threading.current_thread() is _threading.main_thread()
         result = Result(self, _core.run(spec, cancel, on_main))
         if out is not None:
             result.write(out)
+        _judge(result, on_failure)
         return result
+
+
+def _check_on_failure(on_failure):
+    if on_failure not in ("warn", "raise", "ignore"):
+        raise ValueError("on_failure must be \"warn\", \"raise\" or \"ignore\", got %r" % (on_failure,))
+
+
+def _judge(result, on_failure):
+    """Says so when a run did not do what was asked (Result.verdict)."""
+    verdict = result.verdict
+    if verdict.ok or on_failure == "ignore":
+        return
+    text = "%s: %s" % (result.model.name, verdict.text)
+    if on_failure == "raise":
+        raise StartNotCompleted(text, result)
+    # stacklevel 3: the warning names the caller of Model.run.
+    _warnings.warn(StartNotCompletedWarning(text, result), stacklevel=3)
 
 
 def _axis_text(value, what):
@@ -507,7 +742,7 @@ def _axis_option(key, spec, ranges):
 
 
 def sweep(model, grid=None, lhs=None, ranges=None, seed=1, jobs=None, out=None, progress=None, cancel=None,
-          integrator=None, accuracy=None, end_time=None):
+          integrator=None, accuracy=None, end_time=None, on_failure="warn"):
     """Runs a model over a grid or a Latin hypercube, like ``milldyn sweep``.
 
     - ``grid={"path": spec}``, every combination of the paths' values; spec:
@@ -533,12 +768,20 @@ def sweep(model, grid=None, lhs=None, ranges=None, seed=1, jobs=None, out=None, 
     failed (bad input or a failed analysis; the CLI exits 1) raises
     AnalysisFailed naming the first point's diagnostic.
 
+    Points whose start stalled or did not finish have that verdict as
+    their ``status`` (``stalled``, ``unfinished``) and its text as their
+    ``diagnostic``; ``on_failure`` says what a sweep with such points does:
+    "warn" (default) warns StartNotCompletedWarning (how many, the first
+    one's text; ``table`` the sweep's Table), "raise" raises
+    StartNotCompleted (its ``table`` the Table), "ignore" nothing.
+
     Returns a Table: ``index``, the swept values (in the unit they were
     given in, ``SI`` otherwise), ``status`` (ok | bad_input | failed | a
     start's verdict), every result with its unit (NaN where a point has
     none: see ``status`` and ``diagnostic``). Only with ``out`` does the
     sweep's directory (``sweep.csv``, ``points/``) stay on disk.
     """
+    _check_on_failure(on_failure)
     if not isinstance(model, Model):
         model = Model(model)
     grids = [_axis_option(k, v, False) for k, v in (grid or {}).items()]
@@ -554,14 +797,35 @@ def sweep(model, grid=None, lhs=None, ranges=None, seed=1, jobs=None, out=None, 
     finally:
         if out is None:
             _shutil.rmtree(directory, ignore_errors=True)
-    table.summary = summary
+    table.summary = _named(summary, "sweep summary key")
     if out is None:
         table.summary["files"] = []
     if summary["total"] > 0 and summary["errors"] == summary["total"]:
         first = table["diagnostic"][0] if len(table) else ""
         raise AnalysisFailed("milldyn: sweep failed: every one of its %d points failed (first: %s)"
                              % (summary["total"], first), first)
+    _judge_sweep(model, table, on_failure)
     return table
+
+
+# A point's status that is a start's verdict (driver/Sweep.cpp writes the
+# verdict of driver/Api's verdictKind other than "done" as the status).
+_VERDICT_STATUSES = ("stalled", "unfinished")
+
+
+def _judge_sweep(model, table, on_failure):
+    if on_failure == "ignore" or "status" not in table:
+        return
+    status = list(table["status"])
+    bad = [i for i, s in enumerate(status) if s in _VERDICT_STATUSES]
+    if not bad:
+        return
+    counts = ", ".join("%d %s" % (status.count(s), s) for s in _VERDICT_STATUSES if s in status)
+    text = "sweep of %s: %d of %d points did not complete (%s; see the status and diagnostic columns); " \
+           "first, point %d: %s" % (model.name, len(bad), len(status), counts, bad[0], table["diagnostic"][bad[0]])
+    if on_failure == "raise":
+        raise StartNotCompleted(text, table=table)
+    _warnings.warn(StartNotCompletedWarning(text, table=table), stacklevel=3)
 
 
 def _read_sweep_csv(path):
@@ -604,12 +868,17 @@ def elements():
     type -> {doc, output_only, keys: {key: {kind, unit, required, default,
     choices, min, max, min_exclusive, max_exclusive, doc}}}; defaults and
     bounds in SI (the key's ``unit``)."""
-    return {e["type"]: e for e in _core.elements()}
+    return _named(((e["type"], _element_entry(e)) for e in _core.elements()), "element type")
 
 
 def analyses():
     """The analysis kinds a scenario may ask for, with their keys (as elements())."""
-    return {e["type"]: e for e in _core.analyses()}
+    return _named(((e["type"], _element_entry(e)) for e in _core.analyses()), "analysis kind")
+
+
+def _element_entry(e):
+    e["keys"] = _named(e["keys"], "key of %s" % e["type"])
+    return e
 
 
 def to_si(text, unit):
@@ -663,4 +932,7 @@ def quantity(text):
             return Value(_core.to_si(text, unit), unit)
         except MilldynError:
             pass
-    return Value(value, dimension)
+    # Names the table above does not know: the unit a designer reads for
+    # the dimension (N*m for kg*m^2/s^2 written with N, ...), else the
+    # dimension's canonical text.
+    return Value(value, _preferred_unit(dimension, (text,)) or dimension)

@@ -67,3 +67,32 @@ class UnitError(MilldynError, ValueError):
     def __init__(self, text, column=0):
         super().__init__(text)
         self.column = column
+
+
+class StartNotCompleted(MilldynError, RuntimeError):
+    """A run that did not do what was asked, raised by ``run(...,
+    on_failure="raise")``: its verdict is ``stalled`` (the CLI exits 3) or
+    ``unfinished`` (a start, a run-out or a starting sequence not finished
+    by end_time: no start time or steady values). ``result`` is the run's
+    Result (tables, summary, files written), ``verdict`` its Verdict; from
+    ``sweep(..., on_failure="raise")``, ``table`` is the sweep's Table and
+    ``result`` None."""
+
+    def __init__(self, text, result=None, table=None):
+        super().__init__(text)
+        self.result = result
+        self.table = table
+        self.verdict = result.verdict if result is not None else None
+
+
+class StartNotCompletedWarning(UserWarning):
+    """Warned by ``run()`` (``on_failure="warn"``, the default) for a run whose
+    verdict is ``stalled`` or ``unfinished``, and by ``sweep()`` for a sweep
+    with such points; the message is the verdict's text. ``result`` is the
+    run's Result (None for a sweep's warning, whose ``table`` is the sweep's
+    Table)."""
+
+    def __init__(self, text, result=None, table=None):
+        super().__init__(text)
+        self.result = result
+        self.table = table
