@@ -437,7 +437,7 @@ TEST(ModelFeaturesScenarios, SetOfTheScenarioActsOnTheNamedScenarioThatRuns) {
     EXPECT_DOUBLE_EQ(read(kScenarios, {{"scenario.end_time", "0.25 s"}}).scenario.number("end_time"), 0.25);
     // A key the named scenario does not write yet is added to it, and a bad
     // value is refused naming the user's path.
-    EXPECT_EQ(read(kScenarios, {{"scenario.max_step", "1 ms"}}).scenario.number("max_step"), 1e-3);
+    EXPECT_DOUBLE_EQ(read(kScenarios, {{"scenario.hold_time", "0.1 s"}}).scenario.number("hold_time"), 0.1);
     expectError(readError(kScenarios, {{"scenario.end_time", "-1 s"}}), "<--set scenario.end_time>", 1, 1,
                 "scenarios.run.end_time", "must be > 0 s");
     // With the default scenario running, scenario.KEY is that scenario's.
