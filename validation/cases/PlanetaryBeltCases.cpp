@@ -106,8 +106,12 @@ ModelSpec modelFor(const BeltCase& c, const std::string& level, std::vector<Over
     t = replaceAll(t, "gravity: [0 m/s^2, -9.80665 m/s^2, 0 m/s^2]",
                    "gravity: [0 m/s^2, " + fmt(-c.material.gravity) + " m/s^2, 0 m/s^2]");
     const oc::PlanetaryBeltMasses& m = oracle.getMasses();
+    // The default (kinetostatic) scenario's carrier speed, unless a named
+    // scenario runs instead (a --set of scenario.KEY acts on the scenario
+    // that runs, and the transient `start` has no carrier_speed).
+    const bool namedScenario = std::any_of(extra.begin(), extra.end(),
+                                           [](const Override& x) { return x.path == "use_scenario"; });
     std::vector<Override> o = {{"fidelity.level", level},
-                               {"scenario.carrier_speed", fmt(c.rate) + " rad/s"},
                                {"elements.drive.steady_speed", fmt(c.rate) + " rad/s"},
                                {"bodies.drum1.mass", fmt(m.drum) + " kg"},
                                {"bodies.drum2.mass", fmt(m.drum) + " kg"}};
@@ -127,6 +131,7 @@ ModelSpec modelFor(const BeltCase& c, const std::string& level, std::vector<Over
         o.push_back({"elements.charge1.lag", fmt(M_PI - c.lag) + " rad"});
         o.push_back({"elements.charge2.lag", fmt(M_PI - c.lag) + " rad"});
     }
+    if (!namedScenario) o.push_back({"scenario.carrier_speed", fmt(c.rate) + " rad/s"});
     o.insert(o.end(), extra.begin(), extra.end());
     return readModelText(t, modelsDirectory() + kModel, defaultModelReader(), o);
 }
