@@ -4,6 +4,7 @@
 #include "driver/analyses/Trajectory.h"
 #include "plugins/scene/ElementSchema.h"
 #include "plugins/scene/Format.h"
+#include "plugins/scene/HarmonicForcing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -233,25 +234,30 @@ WindowStatistics::PeriodRule statisticsPeriod(const Scene& scene, const ModelSpe
         why = "outputs.statistics_period";
         return rule;
     }
-    // auto: from the model's periodic loads. An AngleLoad repeats every
-    // revolution of its shaft (whole cycles_per_revolution); a PeriodicLoad
-    // every 2π/P_1 of time.
+    // auto: from the model's periodic loads, asked through HarmonicForcing
+    // (no element type named here). A shaft-angle load (AngleLoad) repeats
+    // every revolution of its shafts (whole events per revolution); a
+    // time-clock load (PeriodicLoad) every 2π/P_1 of time.
     std::set<std::string> angleBodies;
     std::set<double> frequencies;
     std::string angleLoads, periodicLoads;
     for (const ElementSpec& e : spec.elements) {
-        if (e.type == "AngleLoad") {
-            for (const std::string& b : e.names("bodies")) angleBodies.insert(b);
+        const HarmonicForcing* h = scene.findElement<HarmonicForcing>(e.name);
+        if (!h) continue;
+        if (h->forcingClock() == HarmonicForcing::Clock::ShaftAngle) {
+            for (const SimTK::MobilizedBody& m : h->forcingBodies())
+                for (const SceneBody& b : scene.bodies())
+                    if (b.mobod.getMobilizedBodyIndex() == m.getMobilizedBodyIndex()) angleBodies.insert(b.name);
             angleLoads += (angleLoads.empty() ? "" : ", ") + e.name;
-        } else if (e.type == "PeriodicLoad") {
-            frequencies.insert(e.number("fundamental_frequency"));
+        } else {
+            frequencies.insert(h->forcingOrder(1));
             periodicLoads += (periodicLoads.empty() ? "" : ", ") + e.name;
         }
     }
     if (angleBodies.size() == 1 && frequencies.empty()) {
         if (const SceneBody* body = scene.findBody(*angleBodies.begin())) {
             revolutionsOf(*body);
-            why = "auto: the AngleLoad " + angleLoads + " repeats every revolution of " + body->name;
+            why = "auto: the shaft-angle load " + angleLoads + " repeats every revolution of " + body->name;
             return rule;
         }
     }
@@ -259,11 +265,11 @@ WindowStatistics::PeriodRule statisticsPeriod(const Scene& scene, const ModelSpe
         rule.kind = Kind::Time;
         rule.period = 2 * SimTK::Pi / *frequencies.begin();
         rule.what = "periods 2π/P_1 of " + formatNumber(rule.period, 6) + " s";
-        why = "auto: the PeriodicLoad " + periodicLoads + "'s fundamental";
+        why = "auto: the time-clock load " + periodicLoads + "'s fundamental";
         return rule;
     }
     if (angleBodies.empty() && frequencies.empty())
-        why = "no period: the model has no periodic load (AngleLoad, PeriodicLoad) and outputs.statistics_period is "
+        why = "no period: the model has no periodic load (no HarmonicForcing element: AngleLoad, PeriodicLoad) and outputs.statistics_period is "
               "auto; the hold window as it is";
     else
         why = "no period: the periodic loads (" + angleLoads + (angleLoads.empty() || periodicLoads.empty() ? "" : ", ") +
