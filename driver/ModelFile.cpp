@@ -213,6 +213,7 @@ public:
         adopt(root);
         std::vector<OpenFile> open{{canonicalPath(m_file), m_file}};
         resolveIncludes(root, open);  // first: --set reaches included values too
+        if (m_presetsBeside) readPresetsBeside(root);
         // The preset's settings first, every other --set after them: an
         // explicit --integrator or --set wins over the preset's choice.
         auto isPresetPath = [](const Override& o) { return o.path == "preset" || o.path.rfind("presets.", 0) == 0; };
@@ -635,6 +636,36 @@ private:
         checkLevel(level, "fidelity.level", spec.fidelity, spec);
     }
 
+    /// A model file without a presets: block takes them from
+    /// MODEL.presets.yaml beside it when that exists (`milldyn front
+    /// --write-presets` writes it; docs/model-format.md "Presets"). Its
+    /// nodes are registered like a part's, so a bad line is located in it.
+    void readPresetsBeside(YAML::Node root) {
+        if (root["presets"]) return;
+        const std::string file = presetsFileBeside(m_file);
+        std::error_code ec;
+        if (!std::filesystem::exists(file, ec)) return;
+        std::string text, why;
+        if (!readRegularFile(file, text, why))
+            throw SpecError({file, 1, 1}, "presets", "cannot open the presets beside the model: " + why);
+        m_inclusions.push_back({file, m_file});
+        checkModelText(text, file, m_file);
+        YAML::Node doc = loadOneDocument(text, file, m_file);
+        if (!doc || doc.IsNull()) throw SpecError({file, 1, 1, m_file}, "", "the presets file is empty");
+        adopt(doc);
+        registerNodes(doc, m_inclusions.size() - 1);
+        requireMap(doc, "<document>");
+        checkKeys(doc, "", {"presets"});
+        root["presets"] = required(doc, "presets", "");
+        m_readNotes.push_back("presets: read from " + file + " (beside the model: docs/model-format.md \"Presets\")");
+    }
+
+public:
+    /// Whether read() looks for MODEL.presets.yaml beside m_file (a file
+    /// read from disk; not a text in memory).
+    bool m_presetsBeside = false;
+
+private:
     /// `presets: {NAME: {why: TEXT, set: {path: value, ...}}}` and the one
     /// `preset:` (or --preset) selects: its settings are applied as if
     /// written in the file (diagnostics point at the preset's lines).
@@ -1434,6 +1465,13 @@ Override parseOverride(const std::string& text) {
     return o;
 }
 
+std::string presetsFileBeside(const std::string& model) {
+    const std::string suffix = ".yaml";
+    if (model.size() > suffix.size() && model.compare(model.size() - suffix.size(), suffix.size(), suffix) == 0)
+        return model.substr(0, model.size() - suffix.size()) + ".presets.yaml";
+    return model + ".presets.yaml";
+}
+
 ModelSpec readModelText(const std::string& text, const std::string& displayName,
                         const ModelFileReader& reader, const std::vector<Override>& overrides) {
     return Reader(displayName, reader).read(text, overrides);
@@ -1443,7 +1481,9 @@ ModelSpec readModelFile(const std::string& path, const ModelFileReader& reader,
                         const std::vector<Override>& overrides, std::string* resolvedDocument) {
     std::string text, why;
     if (!readRegularFile(path, text, why)) throw SpecError({path, 1, 1}, "<file>", "cannot open the model file: " + why);
-    return Reader(path, reader, resolvedDocument).read(text, overrides);
+    Reader r(path, reader, resolvedDocument);
+    r.m_presetsBeside = true;
+    return r.read(text, overrides);
 }
 
 }  // namespace milldyn

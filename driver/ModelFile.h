@@ -77,6 +77,10 @@ void checkOverridePath(const std::string& path);
 ModelSpec readModelFile(const std::string& path, const ModelFileReader& reader,
                         const std::vector<Override>& overrides = {}, std::string* resolvedDocument = nullptr);
 
+/// Where a model file's presets are read from beside it when the file has
+/// no presets: block: its path with ".yaml" replaced by ".presets.yaml".
+std::string presetsFileBeside(const std::string& model);
+
 /// The same from text in memory (`displayName` appears in diagnostics).
 ModelSpec readModelText(const std::string& text, const std::string& displayName,
                         const ModelFileReader& reader, const std::vector<Override>& overrides = {});
