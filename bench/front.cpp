@@ -39,6 +39,7 @@
 // accuracies are skipped (status "skipped").
 
 #include "clocks.h"
+#include "driver/Front.h"
 #include "driver/analyses/Analysis.h"
 
 #include <algorithm>
@@ -121,100 +122,14 @@ double errorAgainst(const AnalysisResult& r, const AnalysisResult& ref, const st
     return worst;
 }
 
-/// The errors of what a designer reads (see the header).
-struct DesignerErrors {
-    double peak = 0, ripple = 0, speed = 0, time = 0, energy = 0;
-    double worst() const { return std::max({peak, ripple, speed, time, energy}); }
-};
-
-struct Window {
-    double t0 = 0, t1 = 0;
-};
-
-bool isTorque(const AnalysisResult& r, std::size_t c) { return c < r.columnUnits.size() && r.columnUnits[c] == "N*m"; }
-
-double rippleOf(const AnalysisResult& r, std::size_t c, const Window& w) {
-    double lo = INFINITY, hi = -INFINITY;
-    for (const auto& row : r.rows)
-        if (row[0] >= w.t0 - 1e-12 && row[0] <= w.t1 + 1e-12) {
-            lo = std::min(lo, row[c]);
-            hi = std::max(hi, row[c]);
-        }
-    return hi >= lo ? hi - lo : 0.0;
-}
-
-Window steadyWindow(const AnalysisResult& ref, double steadyEnd) {
-    const ResultScalar* start = ref.find("start_time");
-    const double t0 = start ? start->value : (ref.rows.empty() ? 0.0 : ref.rows.front()[0]);
-    double t1 = ref.rows.empty() ? 0.0 : ref.rows.back()[0];
-    if (steadyEnd > 0) t1 = std::min(t1, steadyEnd - 1e-9);
-    return {t0 + 0.5 * (t1 - t0), t1};
-}
-
-double torqueFloor(const AnalysisResult& ref) {
-    double top = 0;
-    for (std::size_t c = 1; c < ref.columnNames.size(); ++c)
-        if (isTorque(ref, c))
-            for (const auto& row : ref.rows) top = std::max(top, std::abs(row[c]));
-    for (const auto& s : ref.results)
-        if (s.name.rfind("peak", 0) == 0 && s.unit == "N*m") top = std::max(top, std::abs(s.value));
-    return 0.01 * top;
-}
-
-double speedFloor(const AnalysisResult& ref) {
-    double top = 0;
-    for (std::size_t c = 1; c < ref.columnNames.size(); ++c)
-        if (c < ref.columnUnits.size() && ref.columnUnits[c] == "rad/s")
-            for (const auto& row : ref.rows) top = std::max(top, std::abs(row[c]));
-    return 0.01 * top;
-}
-
-DesignerErrors designerErrors(const AnalysisResult& r, const AnalysisResult& ref, const Window& w) {
-    DesignerErrors e;
-    const double floor = torqueFloor(ref);
-    const double speedScale = speedFloor(ref);
-    const double sample = ref.rows.size() > 1 ? ref.rows[1][0] - ref.rows[0][0] : 0.0;
-    auto rel = [](double x, double x0, double scale) {
-        const double d = std::abs(x - x0) / std::max(scale, 1e-300);
-        return std::isfinite(d) ? d : INFINITY;
-    };
-    for (const auto& s : ref.results) {
-        const ResultScalar* mine = r.find(s.name);
-        const bool peak = s.name.rfind("peak", 0) == 0 && s.unit == "N*m";
-        const bool speed = s.name == "steady_speed" || s.name == "speed_at_end";
-        const bool time = s.name == "start_time" || s.name == "runout_time";
-        if (!peak && !speed && !time) continue;
-        if (!mine) {  // the run lost a quantity the reference has (a start that did not complete)
-            (peak ? e.peak : speed ? e.speed : e.time) = INFINITY;
-            continue;
-        }
-        if (peak) e.peak = std::max(e.peak, rel(mine->value, s.value, std::max(std::abs(s.value), floor)));
-        if (speed) e.speed = std::max(e.speed, rel(mine->value, s.value, std::max(std::abs(s.value), speedScale)));
-        if (time) {
-            const double d = std::max(0.0, std::abs(mine->value - s.value) - sample * (1 + 1e-9));
-            e.time = std::max(e.time, rel(d, 0.0, std::abs(s.value)));
-        }
-    }
-    for (std::size_t c = 1; c < ref.columnNames.size(); ++c) {
-        if (!isTorque(ref, c)) continue;
-        const std::size_t mc = r.findColumn(ref.columnNames[c]);
-        if (mc == std::string::npos) {
-            e.ripple = INFINITY;
-            continue;
-        }
-        const double r0 = rippleOf(ref, c, w);
-        e.ripple = std::max(e.ripple, rel(rippleOf(r, mc, w), r0, std::max(r0, floor)));
-    }
-    if (const ResultScalar* b = r.find("energy_balance_relative")) e.energy = std::abs(b->value);
-    if (!std::isfinite(e.energy)) e.energy = INFINITY;
-    // A run that stopped before the steady window's end has no ripple to
-    // compare. (A run-out ends at the stop, a time each run finds itself:
-    // the run-out time compares that.)
-    if (r.rows.empty() || r.rows.back()[0] < w.t1 - 1e-9) e.ripple = INFINITY;
-    return e;
-}
+// The errors of what a designer reads: driver/Front.h (one definition for
+// this bench and `milldyn front`); the times keep one sample's allowance here.
 
 using bench::median;
+
+/// One output sample [s]: start and run-out times in this bench's tables
+/// are compared with one sample's allowance (docs/speed-accuracy.md).
+double sampleOf(const AnalysisResult& ref) { return ref.rows.size() > 1 ? ref.rows[1][0] - ref.rows[0][0] : 0.0; }
 
 }  // namespace
 
@@ -272,10 +187,10 @@ int main(int argc, char** argv) {
     for (const auto& o : overridesOf(refText)) refOverrides.push_back(o);
     const Run ref = runOnce(model, refOverrides, 0);
     if (ref.status != "ok") return 1;
-    const Window steady = steadyWindow(ref.result, steadyEnd);
+    const SteadyWindow steady = steadyWindowOf(ref.result, steadyEnd);
     std::fprintf(stderr, "  reference %s %g: %.3g s CPU, steady window %g..%g s, torque floor %g N*m\n",
                  ref.result.statistics.integrator.c_str(), ref.result.statistics.accuracy, ref.cpu, steady.t0,
-                 steady.t1, torqueFloor(ref.result));
+                 steady.t1, torqueFloorOf(ref.result));
 
     // Round 1: every point, loose to tight, skipping past the budget.
     std::vector<Point> points;
@@ -308,7 +223,7 @@ int main(int argc, char** argv) {
                 if (run.status == "ok") {
                     p.stats = run.result.statistics;
                     p.error = columns.empty() ? 0.0 : errorAgainst(run.result, ref.result, columns);
-                    p.designer = designerErrors(run.result, ref.result, steady);
+                    p.designer = designerErrors(run.result, ref.result, steady, sampleOf(ref.result));
                     if (p.stats.integrator == "replay") {
                         p.integrator = "replay";
                         p.accuracy = 0;
@@ -330,7 +245,7 @@ int main(int argc, char** argv) {
 
     std::printf("variant,integrator,accuracy,status,error,cpu_s,steps,realizations,step_attempts,"
                 "peak_error,ripple_error,speed_error,time_error,energy,worst\n");
-    const DesignerErrors refErrors = designerErrors(ref.result, ref.result, steady);
+    const DesignerErrors refErrors = designerErrors(ref.result, ref.result, steady, 0);
     const auto& rs = ref.result.statistics;
     std::printf("reference,%s,%g,ok,0,%.6g,%ld,%ld,%ld,0,0,0,0,%.3g,%.3g\n", rs.integrator.c_str(), rs.accuracy,
                 ref.cpu, rs.steps, rs.realizations, rs.stepAttempts, refErrors.energy, refErrors.energy);

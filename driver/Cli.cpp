@@ -1,5 +1,8 @@
 #include "driver/Cli.h"
 
+#include "driver/Front.h"
+#include "plugins/scene/Format.h"
+
 #include "driver/Api.h"
 #include "driver/ModelFile.h"
 #include "driver/SceneBuilder.h"
@@ -40,6 +43,7 @@ const char* kUsage =
     "                         [--preset fast|balanced|accurate]  (the model's presets:; --set and\n"
     "                         --integrator/--accuracy still win over the preset's choices)\n"
     "                         [--schematic [--schematic-at t1,t2,...]]   (2-D pictures, docs/schematic.md)\n"
+    "                         [--check-resolution]  (again at accuracy/10: warns of peaks and ripples it moves)\n"
     "  milldyn info MODEL.yaml [--set path=value]... [--json]\n"
     "  milldyn validate [--filter TEXT] [--json] [--report DIR]\n"
     "  milldyn sweep MODEL.yaml (--grid path=a:b:n... | --lhs N --range path=a:b...) [--seed S]\n"
@@ -48,6 +52,9 @@ const char* kUsage =
     "                           (--grid also path=a:b:n:log, path=v1,v2,..., 'p=...;q=...' tied)\n"
     "  mpirun -np N milldyn sweep ... --mpi      (each rank runs its slice; rank 0 writes the table)\n"
     "  milldyn merge DIR... --out DIR\n"
+    "  milldyn front MODEL.yaml [--out DIR] [--set path=value]... [--integrators A,B] [--accuracies a,b]\n"
+    "                           [--reference NAME:TOL] [--budget S] [--repeat N] [--write-presets]\n"
+    "                           (error-cost front of any model; presets beside it: docs/speed-accuracy.md)\n"
     "  milldyn elements [TYPE] [--json]   every element type: keys, units, defaults, ranges\n"
     "  milldyn analyses [KIND]            every analysis (scenario.analysis) and its keys\n"
     "  milldyn schema                     JSON Schema of the model format (for YAML editors)\n"
@@ -82,6 +89,12 @@ struct Arguments {
     bool schematic = false;     ///< run --schematic: SVG/PNG pictures of the machine
     std::string schematicAt;    ///< --schematic-at: times or carrier angles
     std::string topic;          ///< help COMMAND, elements TYPE, analyses KIND
+    // front
+    std::string integrators, accuracies, reference;  ///< comma lists; NAME:TOL
+    double budget = 0;                               ///< CPU s per point (0: from the reference)
+    std::size_t repeat = 1;
+    bool writePresets = false;
+    bool checkResolution = false;  ///< run --check-resolution
 };
 
 std::size_t parseCount(const std::string& option, const std::string& text, std::size_t max) {
@@ -141,6 +154,8 @@ struct CommandLine {
         repeatable(run->add_option("--accuracy", accuracy, "relative accuracy (integrator.accuracy)"))->type_name("TOL");
         repeatable(run->add_option("--end-time", endTime, "end time (scenario.end_time; seconds if no unit)"))->type_name("T");
         run->add_flag("--quiet", a.quiet, "print nothing on success");
+        run->add_flag("--check-resolution", a.checkResolution,
+                      "run again at a tenth of the accuracy and warn of peaks and ripples that move by more than 1 %");
         run->add_flag("--schematic", a.schematic, "2-D pictures of the machine (docs/schematic.md)");
         run->add_option("--schematic-at", a.schematicAt, "times or carrier angles of the pictures")
             ->type_name("t1,t2,...");
@@ -169,6 +184,20 @@ struct CommandLine {
         sweep->add_option("--out", a.outDir, "output directory")->type_name("DIR");
         sweep->add_flag("--quiet", a.quiet, "print nothing on success");
         sweep->add_flag("--no-plots", a.noPlots, "write no sweep_*.png (also outputs.plots: false in the model)");
+        CLI::App* front = command("front", "error-cost front of the model: its results at every integrator and "
+                                           "accuracy against a tight reference, and presets from it");
+        modelOptions(front);
+        front->add_option("--out", a.outDir, "output directory for front.csv (default front)")->type_name("DIR");
+        front->add_option("--integrators", a.integrators, "integrators to try (default RungeKuttaMerson,RungeKutta3,CPodes)")
+            ->type_name("A,B,...");
+        front->add_option("--accuracies", a.accuracies, "accuracies to try (default 1e-3,...,1e-8)")->type_name("a,b,...");
+        front->add_option("--reference", a.reference, "the reference run (default RungeKuttaMerson:1e-10)")
+            ->type_name("NAME:TOL");
+        front->add_option("--budget", a.budget, "CPU seconds a point may take (default 2x the reference + 1 s)")
+            ->type_name("S");
+        front->add_option("--repeat", a.repeat, "rounds; CPU time is the median (default 1)")->type_name("N");
+        front->add_flag("--write-presets", a.writePresets,
+                        "write fast/balanced/accurate beside the model (MODEL.presets.yaml)");
         CLI::App* merge = command("merge", "join the parts of a sharded sweep");
         merge->add_option("dirs", a.positional, "sweep directories")->type_name("DIR...");
         merge->add_flag("--no-plots", a.noPlots, "write no sweep_*.png");
@@ -266,7 +295,8 @@ Arguments parseArguments(const std::vector<std::string>& args, std::string* help
         a.shardGiven = true;
     }
     if (!a.schematicAt.empty()) a.schematic = true;
-    if ((a.command == "run" || a.command == "info" || a.command == "sweep") && a.model.empty())
+    if (a.command == "front" && a.outDir == "out") a.outDir = "front";
+    if ((a.command == "run" || a.command == "info" || a.command == "sweep" || a.command == "front") && a.model.empty())
         throw UsageError(a.command + " needs a model file");
     if (a.command == "merge" && a.positional.empty()) throw UsageError("merge needs sweep directories");
     return a;
@@ -315,7 +345,8 @@ int commandRun(const Arguments& a, std::ostream& out, std::ostream& err) {
                              " (no element of it draws itself; docs/schematic.md lists those that do)");
         observer = [&](const Scene& scene, const SimTK::State& s, double key) { recorder->observe(scene, s, key); };
     }
-    const RunOutcome run = runModel(spec, progress, observer);
+    RunOutcome run = runModel(spec, progress, observer);
+    if (a.checkResolution) checkResolution(spec, run.result);
     const AnalysisResult& result = run.result;
     const RunInfo& info = run.info;
     if (showProgress) err << "\r" << std::string(40, ' ') << "\r";
@@ -518,6 +549,120 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
     return 0;
 }
 
+/// `milldyn front MODEL`: the model at every integrator and accuracy against
+/// a tight reference (driver/Front.h), a table with the front marked,
+/// front.csv, and with --write-presets MODEL.presets.yaml beside the model.
+int commandFront(const Arguments& a, std::ostream& out, std::ostream& err) {
+    auto list = [](const std::string& text) {
+        std::vector<std::string> items;
+        std::stringstream ss(text);
+        for (std::string item; std::getline(ss, item, ',');)
+            if (!item.empty()) items.push_back(item);
+        return items;
+    };
+    auto integrator = [](const std::string& option, const std::string& name) {
+        const auto& known = integratorNames();
+        if (std::find(known.begin(), known.end(), name) == known.end())
+            throw UsageError(option + ": unknown integrator '" + name + "'" +
+                             [&] {
+                                 const std::string near = nearestName(name, known);
+                                 return near.empty() ? std::string() : " (did you mean '" + near + "'?)";
+                             }());
+        return name;
+    };
+    auto accuracy = [](const std::string& option, const std::string& text) {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        if (text.empty() || *end != '\0' || !(v > 0 && v < 1))
+            throw UsageError(option + " needs accuracies between 0 and 1, got '" + text + "'");
+        return v;
+    };
+    FrontOptions options;
+    if (!a.integrators.empty()) {
+        options.integrators.clear();
+        for (const auto& n : list(a.integrators)) options.integrators.push_back(integrator("--integrators", n));
+    }
+    if (!a.accuracies.empty()) {
+        options.accuracies.clear();
+        for (const auto& t : list(a.accuracies)) options.accuracies.push_back(accuracy("--accuracies", t));
+        std::sort(options.accuracies.rbegin(), options.accuracies.rend());  // loose to tight
+    }
+    if (!a.reference.empty()) {
+        const auto colon = a.reference.find(':');
+        if (colon == std::string::npos) throw UsageError("--reference needs NAME:TOL, got '" + a.reference + "'");
+        options.referenceIntegrator = integrator("--reference", a.reference.substr(0, colon));
+        options.referenceAccuracy = accuracy("--reference", a.reference.substr(colon + 1));
+    }
+    if (!(a.budget >= 0) || !std::isfinite(a.budget)) throw UsageError("--budget needs CPU seconds >= 0");
+    options.budget = a.budget;
+    if (a.repeat < 1 || a.repeat > 100) throw UsageError("--repeat needs a whole number from 1 to 100");
+    options.repeat = static_cast<int>(a.repeat);
+    for (const auto& p : options.accuracies)
+        if (p <= options.referenceAccuracy)
+            throw UsageError("--accuracies: " + formatNumber(p) + " is not looser than the reference's " +
+                             formatNumber(options.referenceAccuracy));
+
+    OutputSet outputs(a.outDir);  // all new files or the old set untouched
+    const bool progress = !a.quiet && ::isatty(STDERR_FILENO);
+    const FrontResult front = measureFront(a.model, a.overrides, options, [&](const std::string& line) {
+        if (progress) err << "  " << line << "\n";
+    });
+    const std::string csv = outputs.staging() + "/front.csv";
+    writeFileAtomically(csv, frontCsv(front));
+    std::vector<std::string> files = outputs.commit({csv});
+    std::string presetsFile;
+    if (a.writePresets) {
+        presetsFile = presetsFileBeside(a.model);
+        writeFileAtomically(presetsFile, frontPresetsYaml(front));
+        files.push_back(presetsFile);
+    }
+    if (a.quiet) return 0;
+    out << "front of " << a.model << " against " << front.reference.integrator << " " << front.reference.accuracy
+        << " (" << formatNumber(front.reference.cpuSeconds, 3) << " s CPU)\n"
+        << "  errors: peaks and ripple against the torque floor " << formatNumber(front.torqueFloor, 4)
+        << " N*m, steady window " << formatNumber(front.window.t0, 6) << " to " << formatNumber(front.window.t1, 6)
+        << " s (docs/speed-accuracy.md)\n";
+    out << "  integrator          accuracy  CPU [s]    peak     ripple   speed    time     energy   worst\n";
+    for (const auto& p : front.points) {
+        std::ostringstream line;
+        line << "  " << (p.onFront ? "* " : "  ") << std::left << std::setw(18) << p.integrator << std::setw(10)
+             << formatNumber(p.accuracy, 3);
+        if (p.status != "ok") {
+            line << p.status;
+        } else {
+            const DesignerErrors& e = p.errors;
+            line << std::setw(11) << formatNumber(p.cpuSeconds, 3);
+            for (double v : {e.peak, e.ripple, e.speed, e.time, e.energy, e.worst()})
+                line << std::setw(9) << formatNumber(v, 2);
+        }
+        out << line.str() << "\n";
+    }
+    out << "  (* on the front: no cheaper point is as accurate)\n";
+    for (const auto& preset : front.presets) {
+        if (preset.point < 0) continue;
+        const FrontPoint& p = front.points[static_cast<std::size_t>(preset.point)];
+        out << "  preset " << preset.name << " (worst <= " << formatNumber(preset.target, 2) << "): " << p.integrator
+            << " " << formatNumber(p.accuracy, 3) << ", worst " << formatNumber(p.errors.worst(), 2) << ", "
+            << formatNumber(p.cpuSeconds, 3) << " s CPU\n";
+    }
+    for (const auto& n : front.notes) out << "  note: " << n << "\n";
+    if (a.writePresets) {
+        const ModelSpec spec = readModel(a.model, {});
+        const bool beside = std::any_of(spec.readNotes.begin(), spec.readNotes.end(), [&](const std::string& n) {
+            return n.find(presetsFile) != std::string::npos;
+        });
+        if (beside)
+            out << "  presets: run with --preset NAME (read from " << presetsFile << ")\n";
+        else
+            out << "  note: " << a.model << " has its own presets: block, which wins over " << presetsFile
+                << "; copy the presets into it or remove it\n";
+    }
+    out << "  wrote";
+    for (std::size_t i = 0; i < files.size(); ++i) out << (i ? ", " : " ") << files[i];
+    out << "\n";
+    return 0;
+}
+
 int commandMerge(const Arguments& a, std::ostream& out, std::ostream& err) {
     SweepSummary summary = mergeSweeps(a.positional, a.outDir);
     addSweepPlots(!a.noPlots, SweepLayout::Infer, a.outDir, summary, err);
@@ -598,6 +743,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         if (a.command == "validate") return commandValidate(a, out, err);
         if (a.command == "sweep") return commandSweep(a, out, err);
         if (a.command == "merge") return commandMerge(a, out, err);
+        if (a.command == "front") return commandFront(a, out, err);
         if (a.command == "elements") return commandElements(a, out);
         if (a.command == "analyses") return commandAnalyses(a, out);
         if (a.command == "schema") return commandSchema(out);
