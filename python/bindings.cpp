@@ -7,6 +7,7 @@
 // carrying the text the CLI prints.
 
 #include "driver/Api.h"
+#include "driver/Front.h"
 #include "driver/PluginLoader.h"
 #include "driver/Simulation.h"
 #include "driver/Sweep.h"
@@ -150,7 +151,7 @@ py::dict schemaDict(const ElementSchema& s) {
     return d;
 }
 
-std::unique_ptr<RunHandle> runSpec(const SpecHandle& h, Token* token, bool checkSignals) {
+std::unique_ptr<RunHandle> runSpec(const SpecHandle& h, Token* token, bool checkSignals, bool checkRes) {
     auto flag = token ? token->flag : std::make_shared<CancelFlag>();
     ProgressFn signals;
     if (checkSignals) {
@@ -170,6 +171,7 @@ std::unique_ptr<RunHandle> runSpec(const SpecHandle& h, Token* token, bool check
     out->spec = h.spec;
     py::gil_scoped_release release;
     out->run = runModel(out->spec, progress);
+    if (checkRes) checkResolution(out->spec, out->run.result);  // `run --check-resolution` (driver/Front.h)
     return out;
 }
 
@@ -258,7 +260,68 @@ PYBIND11_MODULE(_milldyn, m) {
         return d;
     });
 
-    m.def("run", &runSpec, py::arg("spec"), py::arg("token") = nullptr, py::arg("check_signals") = false);
+    m.def("run", &runSpec, py::arg("spec"), py::arg("token") = nullptr, py::arg("check_signals") = false,
+          py::arg("check_resolution") = false);
+
+    // `milldyn front` (driver/Front.h): the front as plain data; the
+    // module's front() wraps it.
+    m.def("front", [](const std::string& model, const OverrideTriples& overrides, const std::vector<std::string>& integrators,
+                      const std::vector<double>& accuracies, const std::string& refIntegrator, double refAccuracy,
+                      double budget, int repeat, bool writePresets) {
+        FrontOptions o;
+        if (!integrators.empty()) o.integrators = integrators;
+        if (!accuracies.empty()) o.accuracies = accuracies;
+        if (!refIntegrator.empty()) o.referenceIntegrator = refIntegrator;
+        if (refAccuracy > 0) o.referenceAccuracy = refAccuracy;
+        o.budget = budget;
+        o.repeat = repeat;
+        FrontResult f;
+        {
+            py::gil_scoped_release release;
+            f = measureFront(model, toOverrides(overrides), o);
+        }
+        auto point = [](const FrontPoint& p) {
+            py::dict d;
+            d["integrator"] = p.integrator;
+            d["accuracy"] = p.accuracy;
+            d["status"] = p.status;
+            d["cpu_s"] = p.cpuSeconds;
+            d["steps"] = p.steps;
+            d["realizations"] = p.realizations;
+            d["peak_error"] = p.errors.peak;
+            d["ripple_error"] = p.errors.ripple;
+            d["speed_error"] = p.errors.speed;
+            d["time_error"] = p.errors.time;
+            d["energy"] = p.errors.energy;
+            d["worst"] = p.errors.worst();
+            d["front"] = p.onFront;
+            return d;
+        };
+        py::dict d;
+        d["reference"] = point(f.reference);
+        py::list points;
+        for (const auto& p : f.points) points.append(point(p));
+        d["points"] = points;
+        py::dict presets;
+        for (const auto& p : f.presets)
+            presets[py::str(p.name)] = p.point < 0 ? py::object(py::none()) : py::object(py::int_(p.point));
+        d["presets"] = presets;
+        d["targets"] = [&] {
+            py::dict t;
+            for (const auto& p : f.presets) t[py::str(p.name)] = p.target;
+            return t;
+        }();
+        d["torque_floor"] = f.torqueFloor;
+        d["steady_window"] = py::make_tuple(f.window.t0, f.window.t1);
+        d["notes"] = f.notes;
+        d["csv"] = frontCsv(f);
+        if (writePresets) {
+            const std::string file = presetsFileBeside(model);
+            writeFileAtomically(file, frontPresetsYaml(f));
+            d["presets_file"] = file;
+        }
+        return d;
+    });
 
     py::class_<RunHandle>(m, "Run")
         .def_property_readonly("analysis", [](const RunHandle& r) { return r.run.result.analysis; })

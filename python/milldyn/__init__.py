@@ -44,7 +44,7 @@ import numpy as _np  # noqa: E402
 __version__ = _core.__version__
 CancelToken = _core.CancelToken
 
-__all__ = ["Model", "Result", "Table", "Value", "Matrix", "Verdict", "CancelToken", "sweep", "validate", "elements",
+__all__ = ["Model", "Result", "Table", "Value", "Matrix", "Verdict", "CancelToken", "sweep", "front", "validate", "elements",
            "analyses", "load_plugin", "to_si", "quantity", "ModelError", "ModelFileNotFound", "AnalysisFailed",
            "OutputFailed", "Cancelled", "UnitError", "MilldynError", "StartNotCompleted", "StartNotCompletedWarning"]
 
@@ -637,7 +637,7 @@ class Model:
         return _named(_core.describe(self._spec), "info field")
 
     def run(self, out=None, set=None, scenario=None, preset=None, integrator=None, accuracy=None,
-            end_time=None, cancel=None, on_failure="warn"):
+            end_time=None, cancel=None, on_failure="warn", check_resolution=False):
         """Runs the model's analysis and returns a Result. Nothing is written
         unless ``out`` names a directory (then the CLI's files go there).
         ``set``, ``scenario``, ``preset``, ``integrator``, ``accuracy`` and
@@ -650,12 +650,18 @@ class Model:
         text and returns the Result; "raise" raises StartNotCompleted
         carrying the Result (its files written first when ``out`` is
         given, as the CLI writes them); "ignore" only sets
-        ``result.verdict``."""
+        ``result.verdict``.
+
+        ``check_resolution=True`` runs the model again at a tenth of its
+        accuracy, as ``milldyn run --check-resolution`` does, and adds a
+        warning note for every torque peak, peak-to-peak value, ripple and
+        speed fluctuation that moves by more than 1 %
+        (docs/speed-accuracy.md "Your own model")."""
         _check_on_failure(on_failure)
         extra = _overrides(set, scenario, preset, integrator=integrator, accuracy=accuracy, end_time=end_time)
         spec = _read_model(self.path, self.overrides + extra) if extra else self._spec
         on_main = _threading.current_thread() is _threading.main_thread()
-        result = Result(self, _core.run(spec, cancel, on_main))
+        result = Result(self, _core.run(spec, cancel, on_main, bool(check_resolution)))
         if out is not None:
             result.write(out)
         _judge(result, on_failure)
@@ -739,6 +745,33 @@ def _axis_option(key, spec, ranges):
         specs = spec if per_path else [spec] * len(paths)
         return ";".join(_spec_text(p, x, ranges) for p, x in zip(paths, specs))
     return _spec_text(_utf8(key, "grid path"), spec, ranges)
+
+
+def front(model, integrators=None, accuracies=None, reference=None, budget=None, repeat=1, write_presets=False):
+    """The error-cost front of a model, as ``milldyn front`` measures it
+    (docs/speed-accuracy.md "Your own model"): the model (a Model, whose
+    overrides apply, or a path) at every integrator of ``integrators``
+    (default RungeKuttaMerson, RungeKutta3, CPodes) and accuracy of
+    ``accuracies`` (default 1e-3 ... 1e-8) against ``reference`` (a pair
+    (integrator, accuracy), default ("RungeKuttaMerson", 1e-10)).
+
+    Returns a dict: ``points`` (one dict per run: integrator, accuracy,
+    status, cpu_s, the errors peak_error, ripple_error, speed_error,
+    time_error, energy, worst, and front: on the front), ``reference``,
+    ``presets`` ({"fast", "balanced", "accurate"}: the index in ``points``
+    of the cheapest point within the target, or None), ``targets``,
+    ``torque_floor`` [N*m], ``steady_window`` [s], ``notes`` and ``csv``
+    (front.csv's text). ``write_presets=True`` writes MODEL.presets.yaml
+    beside the model (its path in ``presets_file``)."""
+    if not isinstance(model, Model):
+        model = Model(model)
+    ref = reference or ("", 0.0)
+    if not isinstance(ref, (tuple, list)) or len(ref) != 2:
+        raise TypeError("reference must be a pair (integrator, accuracy)")
+    result = _core.front(_path(model.path), model.overrides, [str(i) for i in (integrators or [])],
+                         [float(a) for a in (accuracies or [])], str(ref[0]), float(ref[1]),
+                         float(budget or 0.0), int(repeat), bool(write_presets))
+    return _named(result, "front key")
 
 
 def sweep(model, grid=None, lhs=None, ranges=None, seed=1, jobs=None, out=None, progress=None, cancel=None,
