@@ -36,8 +36,8 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 const std::string kModels = std::string(MILLDYN_SOURCE_DIR) + "/models/";
 
 TEST(CliCommands, HelpForEveryCommandByHelpAndByDashDashHelp) {
-    for (const std::string command : {"run", "info", "validate", "sweep", "merge", "elements", "analyses", "schema",
-                                      "completion"}) {
+    for (const std::string command : {"run", "info", "validate", "sweep", "merge", "front", "elements", "analyses",
+                                      "schema", "completion"}) {
         SCOPED_TRACE(command);
         const Ran a = cli({"help", command}), b = cli({command, "--help"});
         EXPECT_EQ(a.code, 0) << a.err;
