@@ -131,7 +131,7 @@ DatasheetProblem checkDatasheet(const MotorDatasheet& d) {
     if (!(d.breakdownTorqueRatio > 1))
         return {"breakdown_ratio", "Mk/Mn = " + formatNumber(d.breakdownTorqueRatio) +
                                        " must exceed 1: the rated point lies below the breakdown torque"};
-    if (d.lockedRotorTorqueRatio > d.breakdownTorqueRatio)
+    if (d.lockedRotorTorqueRatio > 0 && d.lockedRotorTorqueRatio > d.breakdownTorqueRatio)
         return {"breakdown_ratio", "Mk/Mn = " + formatNumber(d.breakdownTorqueRatio) + " is below Ma/Mn = " +
                                        formatNumber(d.lockedRotorTorqueRatio) +
                                        ": the breakdown torque is the largest torque of the curve"};
@@ -149,13 +149,46 @@ DatasheetProblem checkDatasheet(const MotorDatasheet& d) {
                                         " % (more than 10 %): the datasheet's power, efficiency, voltage, current and "
                                         "power factor contradict each other"};
     const double Ma = d.lockedRotorTorqueRatio * Mn, Ia = d.lockedRotorCurrentRatio * d.ratedCurrent;
-    if (!(Ma * ws < std::sqrt(3.0) * d.lineVoltage * Ia))
+    if (Ma > 0 && Ia > 0 && !(Ma * ws < std::sqrt(3.0) * d.lineVoltage * Ia))
         return {"locked_rotor_ratio", "the air-gap power at standstill Ma·ω_s = " + formatNumber(Ma * ws) +
                                           " W exceeds the apparent input √3·V·Ia = " +
                                           formatNumber(std::sqrt(3.0) * d.lineVoltage * Ia) +
                                           " W: no machine gives this starting torque from this starting current"};
-    if (d.curveSpeeds.size() != d.curveTorques.size())
+    // A published curve: torques and/or line currents at its speeds.
+    const std::size_t n = d.curveSpeeds.size();
+    if (d.curveTorques.size() != n && !d.curveTorques.empty())
         return {"curve_torques", "give one torque per curve speed"};
+    if (d.curveCurrents.size() != n && !d.curveCurrents.empty())
+        return {"curve_currents", "give one current per curve speed"};
+    if (n > 0 && d.curveTorques.empty() && d.curveCurrents.empty())
+        return {"curve_speeds", "curve speeds without curve_torques or curve_currents"};
+    const double Mk = d.breakdownTorqueRatio * Mn;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double speed = d.curveSpeeds[i];
+        const std::string at = " at " + formatNumber(speed * 30 / M_PI, 5) + " rpm";
+        const double T = d.curveTorques.empty() ? 0 : d.curveTorques[i];
+        const double I = d.curveCurrents.empty() ? 0 : d.curveCurrents[i];
+        if (T > 0 && !(speed < ws))
+            return {"curve_speeds", "the curve drives with " + formatNumber(T, 5) + " N*m" + at +
+                                        ", not below the synchronous speed " + formatNumber(ws * 30 / M_PI) +
+                                        " rpm: a motor's torque there is zero or braking"};
+        if (T > Mk)
+            return {"curve_torques", "the curve's " + formatNumber(T, 5) + " N*m" + at + " exceeds the breakdown torque Mk = " +
+                                         formatNumber(Mk, 5) + " N*m, the largest torque of the curve"};
+        if (T > 0 && I > 0 && !(T * ws < std::sqrt(3.0) * d.lineVoltage * I))
+            return {"curve_currents", "the air-gap power T·ω_s = " + formatNumber(T * ws) + " W" + at +
+                                          " exceeds the apparent input √3·V·I = " +
+                                          formatNumber(std::sqrt(3.0) * d.lineVoltage * I) +
+                                          " W there: no machine gives this torque from this current"};
+        if (speed == 0 && T > 0 && Ma > 0 && std::abs(T / Ma - 1) > 0.1)
+            return {"curve_torques", "the curve's standstill torque " + formatNumber(T, 5) + " N*m and Ma = " +
+                                         formatNumber(Ma, 5) + " N*m (locked_rotor_ratio) differ by " +
+                                         formatNumber(100 * std::abs(T / Ma - 1), 3) + " % (more than 10 %)"};
+        if (speed == 0 && I > 0 && Ia > 0 && std::abs(I / Ia - 1) > 0.1)
+            return {"curve_currents", "the curve's standstill current " + formatNumber(I, 5) + " A and Ia = " +
+                                          formatNumber(Ia, 5) + " A (locked_rotor_current_ratio) differ by " +
+                                          formatNumber(100 * std::abs(I / Ia - 1), 3) + " % (more than 10 %)"};
+    }
     return {};
 }
 
@@ -172,16 +205,20 @@ CageFitResult fitCageCircuitCached(const MotorDatasheet& d, int cages) {
     };
     // A refused datasheet throws here, outside call_once (a throwing
     // callable there has deadlocked some standard libraries).
-    if ((cages != 1 && cages != 2) || !checkDatasheet(d).key.empty()) return fitCageCircuit(d, cages);
+    if ((cages != 1 && cages != 2) || !checkDatasheet(d).key.empty() ||
+        (cages == 2 && !(d.lockedRotorTorqueRatio > 0 && d.lockedRotorCurrentRatio > 0)))
+        return fitCageCircuit(d, cages);
     static std::mutex mutex;
     static std::map<std::vector<double>, std::shared_ptr<Entry>> cache;
     std::vector<double> key = {double(cages),       d.ratedPower,  d.ratedSpeed,
                                d.lineVoltage,       d.ratedCurrent, d.powerFactor,
                                d.efficiency,        d.lockedRotorTorqueRatio, d.breakdownTorqueRatio,
                                d.lockedRotorCurrentRatio, d.frequency, double(d.polePairs),
-                               double(d.curveSpeeds.size())};
+                               double(d.curveSpeeds.size()), double(d.curveTorques.size()),
+                               double(d.curveCurrents.size())};
     key.insert(key.end(), d.curveSpeeds.begin(), d.curveSpeeds.end());
     key.insert(key.end(), d.curveTorques.begin(), d.curveTorques.end());
+    key.insert(key.end(), d.curveCurrents.begin(), d.curveCurrents.end());
     std::shared_ptr<Entry> entry;
     {
         const std::lock_guard<std::mutex> lock(mutex);
@@ -198,6 +235,8 @@ CageFitResult fitCageCircuit(const MotorDatasheet& d, int cages) {
     if (cages != 1 && cages != 2) throw std::invalid_argument("fitCageCircuit: 1 or 2 cages");
     const DatasheetProblem problem = checkDatasheet(d);
     if (!problem.key.empty()) throw std::invalid_argument(problem.key + ": " + problem.reason);
+    if (cages == 2 && !(d.lockedRotorTorqueRatio > 0 && d.lockedRotorCurrentRatio > 0))
+        throw std::invalid_argument("locked_rotor_ratio: a double cage is fitted to its starting values Ma/Mn and Ia/In");
     ++g_fits;
     CageFitResult out;
     out.polePairs = polePairsOf(d);
@@ -226,35 +265,53 @@ CageFitResult fitCageCircuit(const MotorDatasheet& d, int cages) {
         }
         return c;
     };
+    // Which datasheet value each model value is: rated point, breakdown,
+    // the standstill values when given, then the curve.
+    enum class What { RatedTorque, RatedCurrent, RatedPowerFactor, RatedEfficiency, LockedTorque, LockedCurrent,
+                      Breakdown, CurveTorque, CurveCurrent };
     struct Target {
         std::string name, key, unit;
         double data;
+        What what;
+        double speed = 0;
     };
     std::vector<Target> targets = {
-        {"rated torque Mn = P_n/ω_n at the rated slip", "rated_power", "N*m", Mn},
-        {"rated current I_n", "rated_current", "A", d.ratedCurrent},
-        {"rated power factor cos φ_n", "rated_power_factor", "1", d.powerFactor},
-        {"rated efficiency η_n (circuit: P_n/P_in)", "rated_efficiency", "1", d.efficiency},
-        {"locked-rotor torque Ma", "locked_rotor_ratio", "N*m", d.lockedRotorTorqueRatio * Mn},
-        {"locked-rotor current Ia", "locked_rotor_current_ratio", "A", d.lockedRotorCurrentRatio * d.ratedCurrent},
-        {"breakdown torque Mk", "breakdown_ratio", "N*m", d.breakdownTorqueRatio * Mn},
+        {"rated torque Mn = P_n/ω_n at the rated slip", "rated_power", "N*m", Mn, What::RatedTorque},
+        {"rated current I_n", "rated_current", "A", d.ratedCurrent, What::RatedCurrent},
+        {"rated power factor cos φ_n", "rated_power_factor", "1", d.powerFactor, What::RatedPowerFactor},
+        {"rated efficiency η_n (circuit: P_n/P_in)", "rated_efficiency", "1", d.efficiency, What::RatedEfficiency},
     };
-    for (std::size_t i = 0; i < d.curveSpeeds.size(); ++i)
+    if (d.lockedRotorTorqueRatio > 0)
+        targets.push_back({"locked-rotor torque Ma", "locked_rotor_ratio", "N*m", d.lockedRotorTorqueRatio * Mn,
+                           What::LockedTorque});
+    if (d.lockedRotorCurrentRatio > 0)
+        targets.push_back({"locked-rotor current Ia", "locked_rotor_current_ratio", "A",
+                           d.lockedRotorCurrentRatio * d.ratedCurrent, What::LockedCurrent});
+    targets.push_back({"breakdown torque Mk", "breakdown_ratio", "N*m", d.breakdownTorqueRatio * Mn, What::Breakdown});
+    for (std::size_t i = 0; i < d.curveTorques.size(); ++i)
         targets.push_back({"curve torque at " + formatNumber(d.curveSpeeds[i] * 30 / M_PI, 5) + " rpm", "curve_torques",
-                           "N*m", d.curveTorques[i]});
+                           "N*m", d.curveTorques[i], What::CurveTorque, d.curveSpeeds[i]});
+    for (std::size_t i = 0; i < d.curveCurrents.size(); ++i)
+        targets.push_back({"curve current at " + formatNumber(d.curveSpeeds[i] * 30 / M_PI, 5) + " rpm", "curve_currents",
+                           "A", d.curveCurrents[i], What::CurveCurrent, d.curveSpeeds[i]});
     const int nt = static_cast<int>(targets.size());
     auto modelValues = [&](const Eigen::VectorXd& x) {
         const CageCircuit c = circuitOf(x);
         const CagePoint rated = cageSteadyState(c, V, f, p, sn);
         const CagePoint locked = cageSteadyState(c, V, f, p, 1.0);
-        std::vector<double> m = {rated.torque,
-                                 rated.current,
-                                 rated.powerFactor,
-                                 rated.torque * d.ratedSpeed / rated.inputPower,
-                                 locked.torque,
-                                 locked.current,
-                                 cageBreakdown(c, V, f, p).torque};
-        for (double sp : d.curveSpeeds) m.push_back(cageSteadyState(c, V, f, p, 1 - sp / ws).torque);
+        std::vector<double> m;
+        m.reserve(targets.size());
+        for (const Target& t : targets) switch (t.what) {
+                case What::RatedTorque: m.push_back(rated.torque); break;
+                case What::RatedCurrent: m.push_back(rated.current); break;
+                case What::RatedPowerFactor: m.push_back(rated.powerFactor); break;
+                case What::RatedEfficiency: m.push_back(rated.torque * d.ratedSpeed / rated.inputPower); break;
+                case What::LockedTorque: m.push_back(locked.torque); break;
+                case What::LockedCurrent: m.push_back(locked.current); break;
+                case What::Breakdown: m.push_back(cageBreakdown(c, V, f, p).torque); break;
+                case What::CurveTorque: m.push_back(cageSteadyState(c, V, f, p, 1 - t.speed / ws).torque); break;
+                case What::CurveCurrent: m.push_back(cageSteadyState(c, V, f, p, 1 - t.speed / ws).current); break;
+            }
         return m;
     };
     auto residuals = [&](const Eigen::VectorXd& x) {
@@ -267,7 +324,11 @@ CageFitResult fitCageCircuit(const MotorDatasheet& d, int cages) {
     // Starting points from the usual per-unit estimates: X_m from the
     // magnetising share of I_n, the total leakage from Ia, Rr from the
     // rated slip, Rs like Rr; the starting cage 5× Rr with half the leakage.
-    const double In = d.ratedCurrent, Ia = d.lockedRotorCurrentRatio * In;
+    // Without Ia (a slip-ring motor's datasheet) the leakage from Mk:
+    // Mk·ω_s ≈ 3·V²/(2·X) with Rs neglected, so Ia ≈ V/X = 2·Mk·ω_s/(3·V).
+    const double In = d.ratedCurrent,
+                 Ia = d.lockedRotorCurrentRatio > 0 ? d.lockedRotorCurrentRatio * In
+                                                    : 2 * d.breakdownTorqueRatio * Mn * ws / (3 * V);
     const double sinPhi = std::sqrt(std::max(1e-6, 1 - d.powerFactor * d.powerFactor));
     const double Xm0 = V / (0.8 * In * sinPhi), Xs0 = 0.5 * V / Ia, Rr0 = sn * V / (In * d.powerFactor);
     Eigen::VectorXd bestX;

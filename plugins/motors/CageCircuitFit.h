@@ -59,13 +59,17 @@ struct MotorDatasheet {
     double ratedCurrent = 0;     ///< I_n line, rms [A]
     double powerFactor = 0;      ///< cos φ_n [-]
     double efficiency = 0;       ///< η_n [-]
-    double lockedRotorTorqueRatio = 0;   ///< Ma/Mn [-]
+    /// Ma/Mn [-]; 0: not given (a single cage only: a slip-ring motor's
+    /// datasheet rarely gives its shorted-ring starting values, which one
+    /// rotor circuit ties to Mk and the rated point).
+    double lockedRotorTorqueRatio = 0;
     double breakdownTorqueRatio = 0;     ///< Mk/Mn [-]
-    double lockedRotorCurrentRatio = 0;  ///< Ia/In [-]
+    double lockedRotorCurrentRatio = 0;  ///< Ia/In [-]; 0: not given (as Ma/Mn)
     double frequency = 50;       ///< [Hz]
     int polePairs = 0;           ///< p; 0: the largest p with synchronous speed above ω_n
-    /// Optional published torque curve: speeds [rad/s], torques [N*m].
-    std::vector<double> curveSpeeds, curveTorques;
+    /// Optional published curve: speeds [rad/s] with the torques [N*m]
+    /// and/or the line currents [A rms] there (each empty or one per speed).
+    std::vector<double> curveSpeeds, curveTorques, curveCurrents;
 };
 
 /// One fitted point: the datasheet's value, the circuit's, and the relative
@@ -92,7 +96,10 @@ struct DatasheetProblem {
 };
 /// Physical impossibilities checked before any fit (rated speed not below
 /// synchronous, breakdown below the rated or starting torque, an air-gap
-/// power above the apparent input at the rated point or at standstill).
+/// power above the apparent input at the rated point or at standstill), and
+/// of a published curve: a driving torque at or above synchronous speed, a
+/// torque above Mk, an air-gap power T·ω_s above the apparent input √3·V·I
+/// at a point with both, a standstill point more than 10 % from Ma or Ia.
 DatasheetProblem checkDatasheet(const MotorDatasheet& data);
 
 /**
@@ -101,8 +108,10 @@ DatasheetProblem checkDatasheet(const MotorDatasheet& data);
  * several starting points, minimising the sum of squared relative residuals
  * of: Mn = P_n/ω_n at the rated slip, I_n and cos φ_n there, η_n = P_n/P_in
  * (the circuit's input: iron, friction and stray losses are booked as
- * stator copper), Ma and Ia at standstill, Mk the largest torque, and each
- * point of a published torque curve. Single cage: Lsσ = Lrσ' (the usual
+ * stator copper), Ma and Ia at standstill (when given), Mk the largest
+ * torque, and each point of a published torque or current curve (the
+ * circuit's torque and line current at the point's slip). Single cage:
+ * Lsσ = Lrσ' (the usual
  * split). Double cage (cage 1 the starting, outer cage, cage 2 the
  * running, inner one): all seven parameters free; the data determine six
  * (η_n follows from P_n, I_n and cos φ_n), and the damped steps take the

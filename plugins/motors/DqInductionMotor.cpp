@@ -461,15 +461,14 @@ MotorDatasheet datasheetOf(const ElementSpec& e) {
     d.ratedCurrent = e.number("rated_current");
     d.powerFactor = e.number("rated_power_factor");
     d.efficiency = e.number("rated_efficiency");
-    d.lockedRotorTorqueRatio = e.number("locked_rotor_ratio");
+    d.lockedRotorTorqueRatio = e.has("locked_rotor_ratio") ? e.number("locked_rotor_ratio") : 0;  // 0: not given
     d.breakdownTorqueRatio = e.number("breakdown_ratio");
-    d.lockedRotorCurrentRatio = e.number("locked_rotor_current_ratio");
+    d.lockedRotorCurrentRatio = e.has("locked_rotor_current_ratio") ? e.number("locked_rotor_current_ratio") : 0;
     d.frequency = e.number("frequency");
     d.polePairs = e.has("pole_pairs") ? static_cast<int>(e.number("pole_pairs")) : 0;
-    if (e.has("curve_speeds")) {
-        d.curveSpeeds = e.numbers("curve_speeds");
-        d.curveTorques = e.numbers("curve_torques");
-    }
+    if (e.has("curve_speeds")) d.curveSpeeds = e.numbers("curve_speeds");
+    if (e.has("curve_torques")) d.curveTorques = e.numbers("curve_torques");
+    if (e.has("curve_currents")) d.curveCurrents = e.numbers("curve_currents");
     return d;
 }
 
@@ -496,13 +495,30 @@ CageFitResult fitOf(const ElementSpec& e) {
         for (const FitPoint& pt : fit.points)
             all += (all.empty() ? "" : ", ") + pt.name.substr(0, pt.name.find(" (")) + " " +
                    formatNumber(100 * pt.residual, 3) + " %";
+        // One rotor circuit ties Ma and Ia to Mk and the rated point: say
+        // what they are for this motor (the fit without them), so a
+        // slip-ring motor's datasheet can leave them out or give these.
+        std::string single;
+        if (cages == 1 && (d.lockedRotorTorqueRatio > 0 || d.lockedRotorCurrentRatio > 0)) {
+            MotorDatasheet ring = d;
+            ring.lockedRotorTorqueRatio = ring.lockedRotorCurrentRatio = 0;
+            if (checkDatasheet(ring).key.empty()) {
+                const CageFitResult f1 = fitCageCircuitCached(ring, 1);
+                if (f1.worstResidual <= tolerance) {
+                    const CagePoint locked = cageSteadyState(f1.circuit, f1.phaseVoltage, d.frequency, f1.polePairs, 1.0);
+                    single = "; one rotor circuit with this rated point and Mk has Ma/Mn = " +
+                             formatNumber(locked.torque * d.ratedSpeed / d.ratedPower, 3) + " and Ia/In = " +
+                             formatNumber(locked.current / d.ratedCurrent, 3) +
+                             " (a slip-ring motor with its rings shorted: give these or leave "
+                             "locked_rotor_ratio and locked_rotor_current_ratio out)";
+                }
+            }
+            single += "; a cage motor with these starting values: use cage: double";
+        }
         throw e.error(w.key, "no " + std::string(cages == 1 ? "single" : "double") + "-cage circuit fits this datasheet within fit_tolerance " +
                                  formatNumber(tolerance) + ": the best misses the " + w.name + " (" +
                                  formatNumber(w.data, 5) + " " + w.unit + ") by " + formatNumber(100 * w.residual, 3) +
-                                 " % (residuals: " + all + ")" +
-                                 (cages == 1 ? "; a single cage cannot give these starting and breakdown torques "
-                                               "together: use cage: double"
-                                             : ""));
+                                 " % (residuals: " + all + ")" + single);
     }
     return fit;
 }
@@ -563,22 +579,35 @@ void crossCheckDqInductionMotor(const ElementSpec& e) {
         if (e.has(k))
             throw e.error(k, datasheet ? "a circuit parameter with a datasheet (rated_power): give one or the other"
                                        : "a datasheet value without rated_power: give the whole datasheet or the circuit");
-    for (const auto& k : datasheet ? kDatasheetKeys : kCircuitKeys)
-        if (!e.has(k))
+    for (const auto& k : datasheet ? kDatasheetKeys : kCircuitKeys) {
+        // A slip-ring motor's datasheet (cage: single) may leave out the
+        // shorted-ring starting values: one rotor circuit ties them to Mk
+        // and the rated point, and the fit reports what they are.
+        const bool startingValue = k == "locked_rotor_ratio" || k == "locked_rotor_current_ratio";
+        if (!e.has(k) && !(datasheet && startingValue && cagesOf(e) == 1))
             throw e.error(datasheet ? "rated_power" : "stator_resistance",
-                          std::string(datasheet ? "a datasheet" : "the circuit") + " needs " + k);
+                          std::string(datasheet ? "a datasheet" : "the circuit") + " needs " + k +
+                              (datasheet && startingValue ? " (a double cage's starting value; cage: single may omit it)" : ""));
+    }
     if (datasheet) {
         if (e.has("phase_voltage")) throw e.error("phase_voltage", "with a datasheet the voltage is rated_voltage (line)");
         if (e.has("rotor_resistance_2")) throw e.error("rotor_resistance_2", "a circuit parameter with a datasheet");
-        if (e.has("curve_speeds") != e.has("curve_torques") ||
-            (e.has("curve_speeds") && e.numbers("curve_speeds").size() != e.numbers("curve_torques").size()))
-            throw e.error("curve_torques", "give one torque per curve_speeds item");
+        // A published curve: curve_speeds with their torques, currents or both.
+        for (const char* k : {"curve_torques", "curve_currents"}) {
+            if (e.has(k) && !e.has("curve_speeds")) throw e.error(k, "needs curve_speeds (the speeds of its points)");
+            if (e.has(k) && e.numbers(k).size() != e.numbers("curve_speeds").size())
+                throw e.error(k, std::string("give one ") + (k[6] == 't' ? "torque" : "current") +
+                                     " per curve_speeds item (" + std::to_string(e.numbers("curve_speeds").size()) +
+                                     ")");
+        }
+        if (e.has("curve_speeds") && !e.has("curve_torques") && !e.has("curve_currents"))
+            throw e.error("curve_speeds", "give the curve's curve_torques, curve_currents or both");
         if (cagesOf(e) == 2 && (starter == "rotor_resistance" || starter == "liquid_resistance"))
             throw e.error("cage", "a " + starter + " starter needs a slip-ring rotor: cage: single");
         fitOf(e);
     } else {
         if (!e.has("phase_voltage")) throw e.error("stator_resistance", "the circuit needs phase_voltage");
-        for (const char* k : {"cage", "fit_tolerance", "curve_speeds", "curve_torques"})
+        for (const char* k : {"cage", "fit_tolerance", "curve_speeds", "curve_torques", "curve_currents"})
             if (e.has(k)) throw e.error(k, "only with a datasheet (rated_power)");
     }
 }
@@ -621,6 +650,16 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
         }
         scene.addDerivedValue({spec.name + ".pole_pairs", double(p.polePairs), "1", "pole pairs"});
         scene.addDerivedValue({spec.name + ".phase_voltage", p.phaseVoltage, "V", "winding voltage" + per});
+        if (!spec.has("locked_rotor_ratio") || !spec.has("locked_rotor_current_ratio")) {
+            // Not in the datasheet (a slip-ring motor): the fitted circuit's.
+            const CagePoint locked = cageSteadyState(fit.circuit, fit.phaseVoltage, p.frequency, fit.polePairs, 1.0);
+            const double Mn = spec.number("rated_power") / spec.number("rated_speed");
+            scene.addDerivedValue({spec.name + ".circuit_locked_rotor_ratio", locked.torque / Mn, "1",
+                                   "Ma/Mn of the fitted circuit (rotor short-circuited)"});
+            scene.addDerivedValue({spec.name + ".circuit_locked_rotor_current_ratio",
+                                   locked.current / spec.number("rated_current"), "1",
+                                   "Ia/In of the fitted circuit (rotor short-circuited)"});
+        }
         for (const FitPoint& pt : fit.points) {
             std::string id = pt.name.substr(0, pt.name.find(" ("));
             for (char& c : id)
@@ -779,11 +818,14 @@ void registerDqInductionMotor(ElementRegistry& registry) {
         P::quantity("rated_current", "A", "datasheet: rated line current I_n").optional(0.0).above(0),
         P::quantity("rated_power_factor", "1", "datasheet: cos φ_n").optional(0.0).above(0).below(1),
         P::quantity("rated_efficiency", "1", "datasheet: η_n").optional(0.0).above(0).below(1),
-        P::quantity("locked_rotor_ratio", "1", "datasheet: Ma/Mn").optional(0.0).above(0).atMost(10),
+        P::quantity("locked_rotor_ratio", "1", "datasheet: Ma/Mn (cage: single may omit it)").optional(0.0).above(0).atMost(10),
         P::quantity("breakdown_ratio", "1", "datasheet: Mk/Mn").optional(0.0).above(0).atMost(10),
-        P::quantity("locked_rotor_current_ratio", "1", "datasheet: Ia/In").optional(0.0).above(1).atMost(20),
-        P::quantityList("curve_speeds", "rad/s", 1, 50, "datasheet: speeds of a published torque curve").optional(0.0).atLeast(0),
+        P::quantity("locked_rotor_current_ratio", "1", "datasheet: Ia/In (cage: single may omit it)").optional(0.0).above(1).atMost(20),
+        P::quantityList("curve_speeds", "rad/s", 1, 50, "datasheet: speeds of a published torque or current curve").optional(0.0).atLeast(0),
         P::quantityList("curve_torques", "N*m", 1, 50, "datasheet: the published torques at curve_speeds").optional(0.0).above(0),
+        P::quantityList("curve_currents", "A", 1, 50, "datasheet: the published line currents (rms) at curve_speeds")
+            .optional(0.0)
+            .above(0),
         P::choice("cage", {"single", "double"}, "datasheet: the circuit fitted (default double)").optional("double"),
         P::quantity("fit_tolerance", "1", "datasheet: largest relative residual of the fit accepted").optional(0.05).above(0),
         P::choice("starter", starters, "how the motor is started").optional("direct_on_line"),
