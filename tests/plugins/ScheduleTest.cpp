@@ -261,6 +261,60 @@ TEST(ScheduledLoad, ABedCollapseStepIsLocatedAndItsDeficitMatchesTheClosedForm) 
     }
 }
 
+TEST(ScheduledLoad, ABreakawayResistanceFollowsItsScheduleAsTheClosedFormSays) {
+    // Far above its release speed (100 rad/s against 0.1) the law is the
+    // running torque M_r = 30 N*m (exp(−10⁶) = 0, tanh(10⁵) = 1): the same
+    // bed collapse as above, ω = ω0 − (M_r/J)·(t − d·Tr/2) after it.
+    const double J = 2, w0 = 100, Mr = 30, ts = 1.2345, d = 0.5, Tr = 0.4;
+    const AnalysisResult r = runAnalysis(readModelText(
+        oneShaft("  - type: BreakawayResistance\n"
+                 "    name: load\n"
+                 "    body: drum\n"
+                 "    static_torque: 80 N*m\n"
+                 "    running_torque: 30 N*m\n"
+                 "    schedule: {step_recovery: {at: 1.2345 s, drop: 0.5, recovery_time: 0.4 s}}\n"),
+        "schedule.yaml", defaultModelReader()));
+    EXPECT_NEAR(valueAt(r, "drum.speed", ts), w0 - Mr / J * ts, 1e-6);
+    EXPECT_NEAR(valueAt(r, "load.torque", ts + Tr), Mr, 1e-9);
+    const std::size_t last = r.rows.size() - 1;
+    EXPECT_NEAR(r.value(last, "drum.speed"), w0 - Mr / J * (3.0 - d * Tr / 2), 1e-6);
+    // The torque at a sample inside the recovery, against f(t)·M_r.
+    for (std::size_t i = 0; i < r.rows.size(); ++i) {
+        const double t = r.value(i, "time");
+        if (t > ts + 1e-9 && t < ts + Tr - 1e-9) {
+            EXPECT_NEAR(r.value(i, "load.torque"), Mr * (1 - d * (1 - (t - ts) / Tr)), 1e-9) << t;
+        }
+    }
+}
+
+TEST(ScheduledLoad, ARampedDiscDragFollowsTheClosedFormSpeed) {
+    // Laminar disc drag T = c·ω^(3/2), c = 0.616·π·ρ·r⁴·k·√ν (seed 001
+    // eq 1), times a ramp f from 0 to 1 over [0.35, 1.35] s:
+    // J·dω/dt = −f(t)·c·ω^(3/2)  ⇒  ω^(−1/2) = ω0^(−1/2) + (c/(2J))·∫0^t f.
+    const double J = 2, w0 = 100, t0 = 0.35, T = 1.0, rho = 1000, nu = 1e-6, r4 = std::pow(0.2, 4), k = 10;
+    const double c = 0.616 * kPi * rho * r4 * k * std::sqrt(nu);
+    const AnalysisResult r = runAnalysis(readModelText(oneShaft("  - type: DiscDrag\n"
+                                                                "    name: drag\n"
+                                                                "    body: drum\n"
+                                                                "    medium_density: 1000 kg/m^3\n"
+                                                                "    medium_viscosity: 1e-6 m^2/s\n"
+                                                                "    disc_diameter: 0.4 m\n"
+                                                                "    discs: 10\n"
+                                                                "    schedule: {ramp: {start: 0.35 s, duration: 1 s}}\n"),
+                                                       "schedule.yaml", defaultModelReader()));
+    auto omega = [&](double t) {
+        const double x = 1 / std::sqrt(w0) + c / (2 * J) * rampIntegral(t, t0, T);
+        return 1 / (x * x);
+    };
+    ASSERT_LT(omega(3.0), w0 - 10);  // the drag is felt: a test that can fail
+    for (double t : {0.3, 0.8, 1.3, 2.0, 3.0}) {
+        EXPECT_NEAR(valueAt(r, "drum.speed", t), omega(t), 1e-6) << t;
+        const double f = t <= t0 ? 0.0 : std::min(1.0, (t - t0) / T);
+        const double w = valueAt(r, "drum.speed", t);
+        EXPECT_NEAR(valueAt(r, "drag.torque", t), f * c * std::pow(w, 1.5), 1e-9) << t;
+    }
+}
+
 TEST(ScheduledBrake, BrakeCapacityOnATableStopsTheDrumAsTheClosedFormSays) {
     // Brake capacity 40 N*m times a table 0 → 1 over [0.5, 1.0] s, then 1:
     // ω(t) = ω0 − (Mb/J)·∫f: 100 − 20·(t − 0.5)²/(2·0.5) on the ramp,
