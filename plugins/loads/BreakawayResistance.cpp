@@ -37,7 +37,7 @@ double BreakawayResistance::torqueAtSpeed(double omega) const {
 }
 
 double BreakawayResistance::calcTorque(const SimTK::State& s) const {
-    return m_params.schedule.factorAt(s.getTime()) * torqueAtSpeed(m_shaft.getOneU(s, SimTK::MobilizerUIndex(0)));
+    return m_params.schedule.factorAt(s) * torqueAtSpeed(m_shaft.getOneU(s, SimTK::MobilizerUIndex(0)));
 }
 
 bool BreakawayResistance::isHeld(const SimTK::State& s) const {
@@ -47,7 +47,7 @@ bool BreakawayResistance::isHeld(const SimTK::State& s) const {
 std::string BreakawayResistance::stallReason(const std::string& name, const SimTK::State& s) const {
     if (!isHeld(s) || !(m_params.staticTorque > m_params.runningTorque)) return "";
     const double w = m_shaft.getOneU(s, SimTK::MobilizerUIndex(0));
-    const double f = m_params.schedule.factorAt(s.getTime());
+    const double f = m_params.schedule.factorAt(s);
     return "the breakaway of " + name + " was not passed: its static torque " +
            formatNumber(f * m_params.staticTorque) + " N*m" +
            (m_params.schedule.isConstant() ? std::string() : " (" + formatNumber(f) + " x M_s, its schedule)") +

@@ -38,7 +38,7 @@ double DiscDrag::calcTorqueAtSpeed(double omega) const {
 }
 
 double DiscDrag::calcTorque(const SimTK::State& s) const {
-    return m_params.schedule.factorAt(s.getTime()) * calcTorqueAtSpeed(calcSpeed(s));
+    return m_params.schedule.factorAt(s) * calcTorqueAtSpeed(calcSpeed(s));
 }
 
 double DiscDrag::calcPower(const SimTK::State& s) const { return calcTorque(s) * std::abs(calcSpeed(s)); }
@@ -49,7 +49,7 @@ void DiscDrag::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec
     if (w == 0) return;
     const SimTK::Vec3 axis = m_body.getBodyRotation(s).z();
     const double sign = w > 0 ? 1.0 : -1.0;
-    m_body.applyBodyTorque(s, -sign * m_params.schedule.factorAt(s.getTime()) * calcTorqueAtSpeed(w) * axis,
+    m_body.applyBodyTorque(s, -sign * m_params.schedule.factorAt(s) * calcTorqueAtSpeed(w) * axis,
                            bodyForces);
 }
 
