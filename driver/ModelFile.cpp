@@ -554,7 +554,7 @@ private:
                     break;
                 case ParamKind::Text:
                     if (isScheduleParam(p))
-                        readSchedule(n, key, v);
+                        readSchedule(n, key, v, model);
                     else
                         v.text = scalar(n, key);
                     break;
@@ -566,15 +566,34 @@ private:
 
     /// A schedule key: a map of one shape, `{ramp: {duration: 10 s}}` or
     /// `{table: [[0 s, 0], [2 s, 1]]}`, into the shape's name (v.text) and
-    /// its numbers in SI (v.numbers, as Schedule::decode takes them).
-    void readSchedule(const YAML::Node& n, const std::string& key, ParamValue& v) const {
+    /// its numbers in SI (v.numbers, as Schedule::decode takes them); with
+    /// `after: {shaft: NAME, speed: VALUE}` beside the shape, the trigger's
+    /// shaft in v.names and its speed [rad/s] in v.number.
+    void readSchedule(const YAML::Node& n, const std::string& key, ParamValue& v, const ModelSpec& model) const {
         requireMap(n, key);
-        const std::vector<std::string>& shapes = Schedule::shapeNames();
-        checkKeys(n, key + ".", shapes);
-        if (n.size() != 1)
-            throw error(n, key, "expected one shape (" + joinWords(shapes) + "), got " + std::to_string(n.size()));
-        const auto it = n.begin();
+        std::vector<std::string> shapes = Schedule::shapeNames();
+        std::vector<std::string> allowedKeys = shapes;
+        allowedKeys.push_back("after");
+        checkKeys(n, key + ".", allowedKeys);
+        const YAML::Node after = n["after"];
+        const std::size_t count = n.size() - (after ? 1 : 0);
+        if (count != 1)
+            throw error(n, key, "expected one shape (" + joinWords(shapes) + "), got " + std::to_string(count));
+        auto it = n.begin();
+        if (it->first.Scalar() == "after") ++it;
         v.text = it->first.Scalar();
+        if (after) {
+            const std::string a = key + ".after";
+            requireMap(after, a);
+            checkKeys(after, a + ".", {"shaft", "speed"});
+            const YAML::Node shaft = after["shaft"], speed = after["speed"];
+            if (!shaft) throw error(after, a + ".shaft", "missing required key 'shaft'");
+            if (!speed) throw error(after, a + ".speed", "missing required key 'speed'");
+            v.names = {scalar(shaft, a + ".shaft")};
+            v.itemWhere = {where(shaft)};
+            requireBody(shaft, a + ".shaft", v.names[0], model);
+            v.number = readNumber(speed, a + ".speed", "rad/s");
+        }
         const YAML::Node body = it->second;
         const std::string sub = key + "." + v.text;
         if (v.text == "table") {

@@ -168,6 +168,33 @@ void addChargeChecks(const ModelSpec& spec, AnalysisResult& result) {
         result.notes.push_back("frozen charge: " + verdict);
     }
 }
+/// Schedules started by an event (`after:`): when each one's clock started,
+/// from its `NAME.schedule_clock` column at the last row (t − clock), or a
+/// note that it never started (its factor stayed at its clock's 0).
+void addScheduleTriggerChecks(const ModelSpec& spec, AnalysisResult& result) {
+    if (result.analysis != "transient" || result.rows.empty()) return;
+    for (const auto& e : spec.elements)
+        for (const auto& [key, v] : e.params) {
+            if (v.names.empty() || !v.given) continue;
+            if (key != "schedule") continue;
+            const std::size_t column = result.findColumn(e.name + ".schedule_clock");
+            if (column == std::string::npos) continue;
+            const auto& last = result.rows.back();
+            const double t = last[result.findColumn("time")], clock = last[column];
+            const std::string what = "schedule of " + e.name + " (after " + v.names[0] + " reaches " +
+                                     formatNumber(v.number) + " rad/s)";
+            if (clock > 0) {
+                result.results.push_back({e.name + ".schedule_start_time", t - clock, "s",
+                                          "when " + v.names[0] + " first rose through " + formatNumber(v.number) +
+                                              " rad/s: the schedule's clock starts (a located event)"});
+                result.notes.push_back(what + ": started at " + formatNumber(t - clock) + " s");
+            } else {
+                result.notes.push_back("warning: " + what + " never started: " + v.names[0] +
+                                       " did not reach the speed by " + formatNumber(t) +
+                                       " s; its factor stayed at its value at the clock's 0");
+            }
+        }
+}
 }  // namespace
 
 AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
@@ -176,6 +203,7 @@ AnalysisResult runAnalysis(const ModelSpec& spec, const ProgressFn& progress, co
     try {
         AnalysisResult result = dispatchAnalysis(spec, progress, observer);
         addChargeChecks(spec, result);
+        addScheduleTriggerChecks(spec, result);
         return result;
     } catch (const SimTK::Exception::Base& e) {
         throw AnalysisError(spec.scenario.type + " analysis of " + spec.name + ": Simbody refused it: " +

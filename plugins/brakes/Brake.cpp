@@ -49,7 +49,7 @@ void buildBrake(const ElementSpec& spec, Scene& scene) {
     p.applyTime = spec.number("apply_time");
     p.rampTime = spec.number("ramp_time");
     p.regularisationSpeed = spec.number("regularisation_speed");
-    p.schedule = Schedule::fromSpec(spec);
+    p.schedule = Schedule::fromSpecUntriggered(spec);
     addScheduleBreakpoints(scene, p.schedule, spec.name);
     auto* impl = new Brake(shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);

@@ -234,7 +234,7 @@ void AngleLoad::setExcitationOn(SimTK::State& s, bool on) const {
 
 void AngleLoad::calcValues(const SimTK::State& s, Values& out) const {
     const bool excited = isExcitationOn(s);
-    const double scheduled = m_params.schedule.factorAt(s.getTime());
+    const double scheduled = m_params.schedule.factorAt(s);
     const std::size_t n = m_bodies.size();
     out.torques.resize(n);
     out.psi.resize(n);

@@ -36,7 +36,8 @@ public:
 
     /// M(t) [N*m].
     double torqueAt(double time) const { return m_params.torque * m_params.schedule.factorAt(time); }
-    double calcTorque(const SimTK::State& state) const { return torqueAt(state.getTime()); }
+    /// M0·f at the schedule's clock in `state` (its time, or since its trigger).
+    double calcTorque(const SimTK::State& state) const { return m_params.torque * m_params.schedule.factorAt(state); }
     const AppliedTorqueParams& params() const { return m_params; }
 
     void calcForce(const SimTK::State& state, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,

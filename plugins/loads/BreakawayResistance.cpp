@@ -37,7 +37,7 @@ double BreakawayResistance::torqueAtSpeed(double omega) const {
 }
 
 double BreakawayResistance::calcTorque(const SimTK::State& s) const {
-    return torqueAtSpeed(m_shaft.getOneU(s, SimTK::MobilizerUIndex(0)));
+    return m_params.schedule.factorAt(s) * torqueAtSpeed(m_shaft.getOneU(s, SimTK::MobilizerUIndex(0)));
 }
 
 bool BreakawayResistance::isHeld(const SimTK::State& s) const {
@@ -47,8 +47,11 @@ bool BreakawayResistance::isHeld(const SimTK::State& s) const {
 std::string BreakawayResistance::stallReason(const std::string& name, const SimTK::State& s) const {
     if (!isHeld(s) || !(m_params.staticTorque > m_params.runningTorque)) return "";
     const double w = m_shaft.getOneU(s, SimTK::MobilizerUIndex(0));
-    return "the breakaway of " + name + " was not passed: its static torque " + formatNumber(m_params.staticTorque) +
-           " N*m held the shaft at " + formatNumber(w) + " rad/s, below its release speed " +
+    const double f = m_params.schedule.factorAt(s);
+    return "the breakaway of " + name + " was not passed: its static torque " +
+           formatNumber(f * m_params.staticTorque) + " N*m" +
+           (m_params.schedule.isConstant() ? std::string() : " (" + formatNumber(f) + " x M_s, its schedule)") +
+           " held the shaft at " + formatNumber(w) + " rad/s, below its release speed " +
            formatNumber(m_params.releaseSpeed) + " rad/s";
 }
 
@@ -67,6 +70,7 @@ void buildBreakawayResistance(const ElementSpec& spec, Scene& scene) {
     p.viscousCoefficient = spec.number("viscous_coefficient");
     p.releaseSpeed = spec.number("release_speed");
     p.smoothingSpeed = spec.number("smoothing_speed");
+    p.schedule = Schedule::fromSpec(spec);
     auto* impl = new BreakawayResistance(shaft->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
@@ -80,9 +84,11 @@ void buildBreakawayResistance(const ElementSpec& spec, Scene& scene) {
     for (int i = 1; i <= 20000; ++i) peak = std::max(peak, impl->torqueAtSpeed(3 * p.releaseSpeed * i / 20000));
     scene.addDerivedValue({spec.name + ".peak_torque", peak, "N*m",
                            "largest torque of the regularised law over 0..3·ω_r (20000 points): the breakaway the "
-                           "drive actually meets, slightly below M_s"});
+                           "drive actually meets, slightly below M_s (before a schedule's factor)"});
     scene.note("force " + spec.name + " (BreakawayResistance, static " + formatNumber(p.staticTorque) + " N*m)",
-               "loads body " + shaft->name + "; releases above " + formatNumber(p.releaseSpeed) + " rad/s");
+               "loads body " + shaft->name + "; releases above " + formatNumber(p.releaseSpeed) + " rad/s" +
+                   (p.schedule.isConstant() ? "" : "; torque times the schedule: " + p.schedule.describe()));
+    addScheduleBreakpoints(scene, p.schedule, spec.name);
 }
 
 }  // namespace
@@ -102,6 +108,7 @@ void registerBreakawayResistance(ElementRegistry& registry) {
         P::quantity("release_speed", "rad/s", "ω_r: the excess falls to 1/e at this speed").optional(0.1).above(0),
         P::quantity("smoothing_speed", "rad/s", "ω_s: sign regularisation at standstill, <= release_speed/10")
             .optional(0.001).above(0),
+        scheduleParam("schedule", "f(t) multiplying the whole torque: {ramp|step_recovery|sine|table: ...} (default 1)"),
     };
     s.crossCheck = [](const ElementSpec& e) {
         if (e.number("static_torque") < e.number("running_torque"))

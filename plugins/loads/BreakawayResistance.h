@@ -3,6 +3,8 @@
 // running law and lets go once the shaft moves (a packed crusher chamber, a
 // conveyor under load, a cold gearbox).
 
+#include "plugins/scene/Schedule.h"
+
 #include <Simbody.h>
 
 #include <string>
@@ -25,6 +27,8 @@ struct BreakawayResistanceParams {
     /// at most release_speed/10 (so the static torque is nearly reached
     /// before it releases).
     double smoothingSpeed = 0.001;
+    /// f(t) multiplying the whole torque (Schedule.h); default f = 1.
+    Schedule schedule;
 };
 
 /**
@@ -32,7 +36,8 @@ struct BreakawayResistanceParams {
  *
  * <pre>
  *   M(ω) = [M_r + (M_s − M_r)·exp(−(ω/ω_r)²)]·tanh(ω/ω_s) + b·ω     (> 0 opposes +ω)
- *   the shaft gets −M as a mobility force; absorbed power M·ω >= 0
+ *   the shaft gets −f(t)·M as a mobility force, f the `schedule` (1 without
+ *   one); absorbed power f·M·ω >= 0
  * </pre>
  *
  * Stribeck's curve with a Gaussian decay (the form Armstrong-Hélouvry's
@@ -53,8 +58,9 @@ public:
     /// Throws std::invalid_argument naming the parameter that is out of range.
     BreakawayResistance(const SimTK::MobilizedBody& shaft, const BreakawayResistanceParams& params);
 
-    /// M(ω) [N*m].
+    /// M(ω) [N*m], before the schedule's factor.
     double torqueAtSpeed(double omega) const;
+    /// f(t)·M(ω) [N*m].
     double calcTorque(const SimTK::State& state) const;
     /// True while the shaft turns slower than the release speed (the
     /// breakaway is not passed).

@@ -37,12 +37,11 @@ double DiscDrag::calcTorqueAtSpeed(double omega) const {
     return 0.073 * rho * w * w * std::pow(r, 5) * std::pow(re, -0.2) * m_params.discs;
 }
 
-double DiscDrag::calcTorque(const SimTK::State& s) const { return calcTorqueAtSpeed(calcSpeed(s)); }
-
-double DiscDrag::calcPower(const SimTK::State& s) const {
-    const double w = calcSpeed(s);
-    return calcTorqueAtSpeed(w) * std::abs(w);
+double DiscDrag::calcTorque(const SimTK::State& s) const {
+    return m_params.schedule.factorAt(s) * calcTorqueAtSpeed(calcSpeed(s));
 }
+
+double DiscDrag::calcPower(const SimTK::State& s) const { return calcTorque(s) * std::abs(calcSpeed(s)); }
 
 void DiscDrag::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
                          SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const {
@@ -50,7 +49,8 @@ void DiscDrag::calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec
     if (w == 0) return;
     const SimTK::Vec3 axis = m_body.getBodyRotation(s).z();
     const double sign = w > 0 ? 1.0 : -1.0;
-    m_body.applyBodyTorque(s, -sign * calcTorqueAtSpeed(w) * axis, bodyForces);
+    m_body.applyBodyTorque(s, -sign * m_params.schedule.factorAt(s) * calcTorqueAtSpeed(w) * axis,
+                           bodyForces);
 }
 
 const DiscDrag* addDiscDrag(Scene& scene, const std::string& name, const SimTK::MobilizedBody& body,
@@ -75,6 +75,7 @@ DiscDragParams dragParams(const ElementSpec& spec) {
     p.viscosity = spec.number("medium_viscosity");
     p.radius = spec.number("disc_diameter") / 2;
     p.discs = static_cast<int>(spec.number("discs"));
+    p.schedule = Schedule::fromSpec(spec);
     return p;
 }
 
@@ -82,8 +83,10 @@ void buildDiscDrag(const ElementSpec& spec, Scene& scene) {
     const SceneBody* body = scene.findBody(spec.text("body"));
     const DiscDragParams p = dragParams(spec);
     addDiscDrag(scene, spec.name, body->mobod, p);
+    addScheduleBreakpoints(scene, p.schedule, spec.name);
     scene.note("force " + spec.name + " (DiscDrag, " + spec.text("law") + ")",
-               std::to_string(p.discs) + " disc(s) loading body " + body->name);
+               std::to_string(p.discs) + " disc(s) loading body " + body->name +
+                   (p.schedule.isConstant() ? "" : "; torque times the schedule: " + p.schedule.describe()));
 }
 
 }  // namespace
@@ -102,6 +105,7 @@ void registerDiscDrag(ElementRegistry& registry) {
         P::quantity("medium_viscosity", "m^2/s", "kinematic viscosity of the medium ν").above(0),
         P::quantity("disc_diameter", "m", "disc diameter D_d = 2 r_d").above(0),
         P::quantity("discs", "1", "number of discs k on this body").optional(1.0).atLeast(1).atMost(1000),
+        scheduleParam("schedule", "f(t) multiplying the torque: {ramp|step_recovery|sine|table: ...} (default 1)"),
     };
     s.crossCheck = [](const ElementSpec& e) {
         if (e.number("discs") != std::floor(e.number("discs"))) throw e.error("discs", "must be a whole number");

@@ -2,6 +2,8 @@
 // DiscDrag: the torque that turning discs in a bead mill's grinding medium
 // (beads, material, liquid) take from their shaft (seed 001, eq 1).
 
+#include "plugins/scene/Schedule.h"
+
 #include <Simbody.h>
 
 namespace milldyn {
@@ -18,6 +20,9 @@ struct DiscDragParams {
     double radius = 0;
     /// Number of identical discs k on this body [-], >= 1.
     int discs = 1;
+    /// f(t) multiplying the torque (a medium filled in, a chamber drained;
+    /// Schedule.h); default f = 1.
+    Schedule schedule;
 };
 
 /**
@@ -30,7 +35,8 @@ struct DiscDragParams {
  *                                T = N/|ω| = 0.616·π·ρ_c·r⁴·k·√(ν·|ω|³)
  *   turbulent (Schlichting, C_M = 0.146·Re^(-1/5), both faces):
  *                                T = 0.073·ρ_c·ω²·r⁵·Re^(-1/5)·k
- *   the torque opposes ω: applied as −T·sign(ω) about the body's z axis
+ *   the torque opposes ω: applied as −f(t)·T·sign(ω) about the body's z axis,
+ *   f the `schedule` (1 without one)
  * </pre>
  *
  * ω is the body's angular velocity component along its own z axis, so the

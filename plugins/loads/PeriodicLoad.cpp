@@ -79,7 +79,7 @@ void PeriodicLoad::calcValues(const SimTK::State& s, Values& out) const {
     if (excited)
         for (std::size_t g = 0; g < m_phases.size(); ++g)
             out.phaseParts[g] = calcSineSeries(m_params.fundamentalFrequency * s.getTime() + m_phases[g]);
-    const double scheduled = m_params.schedule.factorAt(s.getTime());
+    const double scheduled = m_params.schedule.factorAt(s);
     out.rowTorques.resize(m_params.rows);
     out.totalTorque = 0;
     out.absorbedPower = 0;

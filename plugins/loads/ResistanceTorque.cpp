@@ -55,7 +55,7 @@ void ResistanceTorque::realizeTopology(SimTK::State& s) const {
 }
 
 double ResistanceTorque::calcTorque(const SimTK::State& s) const {
-    return m_params.schedule.factorAt(s.getTime()) *
+    return m_params.schedule.factorAt(s) *
            torqueAtSpeed(m_shaft.getOneU(s, SimTK::MobilizerUIndex(0)), isFeeding(s));
 }
 

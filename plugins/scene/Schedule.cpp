@@ -6,9 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace milldyn {
+
+using namespace SimTK;
 
 namespace {
 
@@ -19,6 +22,92 @@ const std::vector<std::string> kShapeNames = {"ramp", "step_recovery", "sine", "
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument(what); }
 
 std::string num(double v) { return formatNumber(v); }
+
+}  // namespace
+
+// ------------------------------------------------ a schedule's trigger (item 4)
+
+/// Where a triggered schedule keeps the instant its clock started: a
+/// discrete variable of the force subsystem (NaN until the trigger fires),
+/// allocated by ScheduleClockForce when the system's topology is realized.
+class ScheduleClock {
+public:
+    const GeneralForceSubsystem* forces = nullptr;
+    mutable DiscreteVariableIndex index;
+    double startTime(const State& s) const {
+        if (!forces || !index.isValid()) return std::numeric_limits<double>::quiet_NaN();
+        return Value<double>::downcast(forces->getDiscreteVariable(s, index));
+    }
+    void setStartTime(State& s, double t) const {
+        Value<double>::updDowncast(forces->updDiscreteVariable(s, index)) = t;
+    }
+};
+
+namespace {
+
+/// Applies nothing: owns the clock's discrete variable.
+class ScheduleClockForce : public Force::Custom::Implementation {
+public:
+    explicit ScheduleClockForce(std::shared_ptr<ScheduleClock> clock) : m_clock(std::move(clock)) {}
+    void realizeTopology(State& s) const override {
+        m_clock->index = m_clock->forces->allocateDiscreteVariable(
+            s, Stage::Dynamics, new Value<double>(std::numeric_limits<double>::quiet_NaN()));
+    }
+    void calcForce(const State&, Vector_<SpatialVec>&, Vector_<Vec3>&, Vector&) const override {}
+    Real calcPotentialEnergy(const State&) const override { return 0; }
+
+private:
+    std::shared_ptr<ScheduleClock> m_clock;
+};
+
+/// The crossing as a located Simbody event, as StarterSpeedTrigger: the
+/// witness ω − ω_t rises through zero where the shaft passes ω_t (+1 once
+/// fired); the clock starts at the step end just past it (the lagged value).
+class ScheduleSpeedTrigger : public TriggeredEventHandler {
+public:
+    ScheduleSpeedTrigger(std::shared_ptr<ScheduleClock> clock, const MobilizedBody& shaft, double speed)
+        : TriggeredEventHandler(Stage::Velocity), m_clock(std::move(clock)), m_shaft(shaft), m_speed(speed) {
+        getTriggerInfo().setTriggerOnRisingSignTransition(true);
+        getTriggerInfo().setTriggerOnFallingSignTransition(false);
+        getTriggerInfo().setRequiredLocalizationTimeWindow(kWindow);
+    }
+    Real getValue(const State& s) const override {
+        if (!std::isnan(m_clock->startTime(s))) return 1;
+        return pinSpeed(s, m_shaft) - m_speed;
+    }
+    void handleEvent(State& s, Real, bool& shouldTerminate) const override {
+        if (std::isnan(m_clock->startTime(s)) && pinSpeed(s, m_shaft) >= m_speed) m_clock->setStartTime(s, s.getTime());
+        shouldTerminate = false;
+    }
+    static constexpr double kWindow = 1e-6;
+
+private:
+    std::shared_ptr<ScheduleClock> m_clock;
+    MobilizedBody m_shaft;
+    double m_speed;
+};
+
+/// A breakpoint of a triggered schedule (its kink at t_start + b), located
+/// as an event: the witness t − t_start − b rises through zero (−1 until
+/// the clock starts), so a step ends on it as on an untriggered one's.
+class ScheduleBreakpointTrigger : public TriggeredEventHandler {
+public:
+    ScheduleBreakpointTrigger(std::shared_ptr<ScheduleClock> clock, double at)
+        : TriggeredEventHandler(Stage::Dynamics), m_clock(std::move(clock)), m_at(at) {
+        getTriggerInfo().setTriggerOnRisingSignTransition(true);
+        getTriggerInfo().setTriggerOnFallingSignTransition(false);
+        getTriggerInfo().setRequiredLocalizationTimeWindow(1e-9);
+    }
+    Real getValue(const State& s) const override {
+        const double t0 = m_clock->startTime(s);
+        return std::isnan(t0) ? -1.0 : s.getTime() - t0 - m_at;
+    }
+    void handleEvent(State&, Real, bool& shouldTerminate) const override { shouldTerminate = false; }
+
+private:
+    std::shared_ptr<ScheduleClock> m_clock;
+    double m_at;
+};
 
 }  // namespace
 
@@ -90,10 +179,21 @@ Schedule Schedule::decode(const std::string& shape, const std::vector<double>& v
 Schedule Schedule::fromSpec(const ElementSpec& spec, const std::string& key) {
     if (!spec.has(key)) return Schedule();
     try {
-        return decode(spec.text(key), spec.numbers(key));
+        Schedule s = decode(spec.text(key), spec.numbers(key));
+        const std::vector<std::string>& after = spec.names(key);
+        if (!after.empty()) s.setTrigger({after[0], spec.number(key)});
+        return s;
     } catch (const std::invalid_argument& e) {
         throw spec.error(key, e.what());
     }
+}
+
+Schedule Schedule::fromSpecUntriggered(const ElementSpec& spec, const std::string& key) {
+    Schedule s = fromSpec(spec, key);
+    if (s.hasTrigger())
+        throw spec.error(key, "after: starts a load's or a torque source's schedule at an event; a capacity's "
+                              "schedule runs on the simulated time (give its times from t = 0)");
+    return s;
 }
 
 Schedule Schedule::ramp(double start, double duration, double from, double to) {
@@ -233,11 +333,66 @@ ParamSchema scheduleParam(std::string key, std::string doc) {
 
 bool isScheduleParam(const ParamSchema& p) { return p.kind == ParamKind::Text && p.unit == "schedule"; }
 
+void Schedule::setTrigger(const Trigger& trigger) {
+    if (trigger.shaft.empty()) bad("after.shaft: name a body");
+    if (!std::isfinite(trigger.speed)) bad("after.speed must be finite");
+    m_trigger = trigger;
+    m_clock = std::make_shared<ScheduleClock>();
+}
+
+double Schedule::clockAt(const SimTK::State& s) const {
+    if (!m_clock) return s.getTime();
+    const double t0 = m_clock->startTime(s);
+    return std::isnan(t0) ? 0.0 : s.getTime() - t0;
+}
+
+double Schedule::factorAt(const SimTK::State& s) const { return factorAt(clockAt(s)); }
+
 void addScheduleBreakpoints(Scene& scene, const Schedule& schedule, const std::string& what) {
-    for (double t : schedule.breakpoints())
-        if (t > 0)
-            scene.addSwitchEvent({Scene::SwitchEvent::Kind::LoadOn, t,
-                                  what + " schedule breakpoint at " + formatNumber(t) + " s", [](SimTK::State&) {}});
+    if (!schedule.hasTrigger()) {
+        for (double t : schedule.breakpoints())
+            if (t > 0)
+                scene.addSwitchEvent({Scene::SwitchEvent::Kind::LoadOn, t,
+                                      what + " schedule breakpoint at " + formatNumber(t) + " s",
+                                      [](SimTK::State&) {}});
+        return;
+    }
+    const Schedule::Trigger& trigger = schedule.trigger();
+    const SceneBody* body = scene.findBody(trigger.shaft);
+    if (!body) throw std::invalid_argument("schedule.after.shaft: no body named '" + trigger.shaft + "'");
+    std::shared_ptr<ScheduleClock> clock = schedule.m_clock;
+    clock->forces = &scene.forces();
+    Force::Custom force(scene.forces(), new ScheduleClockForce(clock));
+    const MobilizedBody shaft = body->mobod;
+    const double speed = trigger.speed;
+    scene.system().addEventHandler(new ScheduleSpeedTrigger(clock, shaft, speed));
+    for (double b : schedule.breakpoints())
+        if (b > 0) scene.system().addEventHandler(new ScheduleBreakpointTrigger(clock, b));
+    // The clock starts at the step end at or just past the crossing (within
+    // the event's window); the start time is the crossing itself, back from
+    // there along the shaft's acceleration (ω − ω_t)/ω̇ <= the window.
+    scene.addLaggedValue({what + ".schedule_start", true,
+                          [clock, shaft, speed](const State& s) {
+                              const double kept = clock->startTime(s);
+                              if (!std::isnan(kept)) return kept;
+                              const double w = pinSpeed(s, shaft);
+                              if (!(w >= speed)) return std::numeric_limits<double>::quiet_NaN();
+                              const double a = shaft.getOneUDot(s, MobilizerUIndex(0));
+                              const double back = a > 0 ? (w - speed) / a : 0.0;
+                              return back <= 1e-3 ? s.getTime() - back : s.getTime();
+                          },
+                          [clock](State& s, double v) {
+                              if (std::isnan(v) || !std::isnan(clock->startTime(s))) return 0.0;
+                              clock->setStartTime(s, v);
+                              return 1.0;
+                          }});
+    scene.addProbe({what + ".schedule_clock", "s", ProbeRole::Generic, Stage::Dynamics,
+                    [schedule](const State& s) { return schedule.clockAt(s); },
+                    "time on the schedule's clock: since " + trigger.shaft + " first reached " +
+                        formatNumber(speed) + " rad/s, 0 before"});
+    scene.note("schedule of " + what, "its clock starts when " + trigger.shaft + " first rises through " +
+                                          formatNumber(speed) + " rad/s (a located event); " + schedule.describe() +
+                                          ", times from that instant");
 }
 
 }  // namespace milldyn

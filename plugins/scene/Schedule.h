@@ -5,12 +5,18 @@
 
 #include "plugins/scene/ElementSchema.h"
 
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace SimTK {
+class State;
+}
 
 namespace milldyn {
 
 class Scene;
+class ScheduleClock;
 
 /**
  * A time law f(t) >= 0 multiplying an element's magnitude. One of
@@ -42,6 +48,16 @@ class Scene;
  * its restart from there the value after (a right-continuous jump would put
  * the new value into the end derivative of the step before, and the
  * output's interpolation inside that step would bend towards it).
+ *
+ * A start trigger (`after: {shaft: NAME, speed: ω_t}`, issue 32 item 4)
+ * makes the schedule's clock τ start when that shaft's pin speed first rises
+ * through ω_t: f = f(τ), τ = t − t_c after the crossing t_c, τ = 0 before
+ * (f held at its value at τ = 0). The crossing is a located Simbody event
+ * (as a starter's switch speed, StarterEvents.h), t_c taken back from the
+ * step end just past it along the shaft's acceleration, and the
+ * breakpoints are events at t_c + b: neither depends on the output's
+ * sampling. A shaft already at or above ω_t when the run starts starts the
+ * clock then.
  */
 class Schedule {
 public:
@@ -67,6 +83,9 @@ public:
     /// The element key `key` of `spec` (absent: constant). Throws SpecError
     /// located at the key.
     static Schedule fromSpec(const ElementSpec& spec, const std::string& key = "schedule");
+    /// As fromSpec, refusing a start trigger (a capacity on the simulated
+    /// time: Brake, Clutch), located at the key.
+    static Schedule fromSpecUntriggered(const ElementSpec& spec, const std::string& key = "schedule");
 
     static Schedule ramp(double start, double duration, double from = 0, double to = 1);
     static Schedule stepRecovery(double at, double drop, double recoveryTime);
@@ -90,9 +109,27 @@ public:
     /// One line: "ramp from 0 to 1 over 10 s from 5 s".
     std::string describe() const;
 
+    /// The start trigger: the clock starts when `shaft` first rises through `speed` [rad/s].
+    struct Trigger {
+        std::string shaft;
+        double speed = 0;
+    };
+    /// Throws std::invalid_argument for an empty shaft or a speed not finite.
+    void setTrigger(const Trigger& trigger);
+    bool hasTrigger() const { return !m_trigger.shaft.empty(); }
+    const Trigger& trigger() const { return m_trigger; }
+    /// The schedule's clock in `s` [s]: its time, or with a trigger the time
+    /// since it fired (0 before). Copies share the trigger's state.
+    double clockAt(const SimTK::State& s) const;
+    /// f at the schedule's clock in `s` [-]: what an element applies.
+    double factorAt(const SimTK::State& s) const;
+
 private:
     Shape m_shape = Shape::Constant;
     std::vector<double> m_v;  // the shape's numbers, as decode() takes them
+    Trigger m_trigger;
+    std::shared_ptr<ScheduleClock> m_clock;  // with a trigger: where its start time lives (addScheduleBreakpoints)
+    friend void addScheduleBreakpoints(Scene& scene, const Schedule& schedule, const std::string& what);
 };
 
 /// The model key of a schedule: a ParamSchema of kind Text marked by its
@@ -106,7 +143,11 @@ bool isScheduleParam(const ParamSchema& p);
 /// Makes the integrator stop at each breakpoint of `schedule` after t = 0
 /// (a scheduled switching of kind LoadOn that changes nothing: the step
 /// ends on the kink and the integrator restarts from it), named "`what`
-/// schedule breakpoint at T s".
+/// schedule breakpoint at T s". With a trigger: registers its clock (a
+/// discrete variable), the crossing and the breakpoints as located events,
+/// the start as a kept value `what.schedule_start` and the probe
+/// `what.schedule_clock` [s]. Throws std::invalid_argument for a trigger
+/// shaft the scene does not have.
 void addScheduleBreakpoints(Scene& scene, const Schedule& schedule, const std::string& what);
 
 }  // namespace milldyn

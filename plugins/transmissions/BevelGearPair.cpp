@@ -48,6 +48,24 @@ BevelForces calcBevelForces(const BevelGearParams& p, double ft) {
     return f;
 }
 
+Vec3 BevelShaftLoads::calcShaftForce(const State& s, MobilizedBodyIndex shaft, double theta) const {
+    const BevelGearParams& p = bevelParams();
+    const BevelForces f = calcShaftForces(s);
+    const Vec3 er(std::cos(theta), std::sin(theta), 0), et(-std::sin(theta), std::cos(theta), 0), ez(0, 0, 1);
+    if (shaft == pinionIndex()) return f.pinionAxial * ez - f.pinionRadial * er - f.tangential * et;
+    if (shaft == wheelIndex()) {
+        const double sense = p.wheelAxisSense;
+        return sense * f.wheelAxial * ez - f.wheelRadial * er - sense * f.tangential * et;
+    }
+    throw std::invalid_argument("BevelShaftLoads: the shaft is neither the pinion nor the wheel");
+}
+
+double BevelShaftLoads::meanRadiusOn(MobilizedBodyIndex shaft) const {
+    if (shaft == pinionIndex()) return bevelParams().meanPitchRadius;
+    if (shaft == wheelIndex()) return bevelParams().wheelMeanPitchRadius();
+    throw std::invalid_argument("BevelShaftLoads: the shaft is neither the pinion nor the wheel");
+}
+
 // -------------------------------------------------------------- compliant
 
 BevelMeshForce::BevelMeshForce(const MobilizedBody& pinion, const MobilizedBody& wheel, const BevelGearParams& p)
@@ -181,11 +199,11 @@ void buildBevelGearPair(const ElementSpec& spec, Scene& scene) {
     } else {
         auto* impl = new BevelRollingConstraint(scene.matter(), g1, g2, r1, s * r2);
         Constraint::Custom constraint(impl);
-        const ConstraintIndex index = constraint.getConstraintIndex();
-        const SimbodyMatterSubsystem* matter = &scene.matter();
-        tangential = [matter, index](const State& st) {
-            return matter->getConstraint(index).getMultipliersAsVector(st)[0];
-        };
+        // Applies nothing: it is how a ShaftBearings' `mesh:` finds F_t.
+        auto* loads = new BevelRigidShaftLoads(scene.matter(), constraint.getConstraintIndex(), g1, g2, p);
+        Force::Custom force(scene.forces(), loads);
+        scene.addForce(spec.name, spec.type, force.getForceIndex(), loads);
+        tangential = [loads](const State& st) { return loads->calcTangentialForce(st); };
         scene.addSteadyResidual({spec.name + ".rolling_error", [g1, g2, r1, r2, s](const State& st) {
                                      return r1 * pinAngle(st, g1) + s * r2 * pinAngle(st, g2);
                                  }});
@@ -232,7 +250,9 @@ void buildBevelGearPair(const ElementSpec& spec, Scene& scene) {
     scene.addSpeedRelation(b1->name, b2->name, -s * r2 / r1);
     scene.note("bevel gear pair " + spec.name + " (BevelGearPair, " + spec.text("law") + ", " +
                    (p.spiralAngle > 0 ? "spiral" : "straight") + ")",
-               b1->name + " meshes with " + b2->name + "; axial and radial forces reported, not applied");
+               b1->name + " meshes with " + b2->name +
+                   "; axial and radial forces reported, not applied to the bodies (a ShaftBearings with mesh: " +
+                   spec.name + " adds the tooth force to its shaft's bearing loads)");
 }
 
 }  // namespace

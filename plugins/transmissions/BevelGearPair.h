@@ -71,6 +71,37 @@ struct BevelForces {
 BevelForces calcBevelForces(const BevelGearParams& p, double tangentialForce);
 
 /**
+ * What a bevel mesh puts on its two shafts besides the torque: the tooth
+ * force at the mean point, which milldyn does not apply to the bodies (its
+ * pins all turn about z and the intersecting axes are not drawn) and which a
+ * ShaftBearings element with `mesh:` adds to its shaft's pin reaction by
+ * statics. Both laws' elements implement it (Scene::findElement).
+ */
+class BevelShaftLoads {
+public:
+    virtual ~BevelShaftLoads() = default;
+    virtual const BevelGearParams& bevelParams() const = 0;
+    virtual SimTK::MobilizedBodyIndex pinionIndex() const = 0;
+    virtual SimTK::MobilizedBodyIndex wheelIndex() const = 0;
+    /// The tooth forces now (Stage::Acceleration for the rigid law).
+    virtual BevelForces calcShaftForces(const SimTK::State& s) const = 0;
+    /**
+     * The tooth force on shaft `shaft` (the pinion or the wheel) in its pin's
+     * frame, z the shaft's axis, with the mean point at angle θ from the
+     * frame's x towards its y: e_r = (cos θ, sin θ, 0), e_θ = (−sin θ, cos θ, 0),
+     * <pre>
+     *   pinion:  F = W_a1 ẑ − W_r1 e_r − F_t e_θ
+     *   wheel:   F = s W_a2 ẑ − W_r2 e_r − s F_t e_θ
+     * </pre>
+     * (the pinion's +z points away from the apex, the wheel's as s says; the
+     * tangential parts give the torques −r_m1 F_t and −s r_m2 F_t about z).
+     */
+    SimTK::Vec3 calcShaftForce(const SimTK::State& s, SimTK::MobilizedBodyIndex shaft, double theta) const;
+    /// The mean point's distance from the shaft's axis: r_m1 or r_m2 [m].
+    double meanRadiusOn(SimTK::MobilizedBodyIndex shaft) const;
+};
+
+/**
  * Torsional law (pins about each shaft's own z, relative to a common
  * parent): δ = r_m1 q1 + s r_m2 q2, s the wheel's axis sense;
  * rigid δ = 0 (ω2/ω1 = −s z1/z2); compliant as GearPair's
@@ -80,7 +111,7 @@ BevelForces calcBevelForces(const BevelGearParams& p, double tangentialForce);
  * bearings) and not applied, since milldyn's pins all turn about z and the
  * intersecting axes are not drawn in space.
  */
-class BevelMeshForce : public SimTK::Force::Custom::Implementation {
+class BevelMeshForce : public SimTK::Force::Custom::Implementation, public BevelShaftLoads {
 public:
     BevelMeshForce(const SimTK::MobilizedBody& pinion, const SimTK::MobilizedBody& wheel, const BevelGearParams& p);
     double calcMeshDisplacement(const SimTK::State& s) const;  ///< δ [m]
@@ -90,6 +121,12 @@ public:
     void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
                    SimTK::Vector& mobilityForces) const override;
     SimTK::Real calcPotentialEnergy(const SimTK::State& s) const override;
+    const BevelGearParams& bevelParams() const override { return m_p; }
+    SimTK::MobilizedBodyIndex pinionIndex() const override { return m_pinion.getMobilizedBodyIndex(); }
+    SimTK::MobilizedBodyIndex wheelIndex() const override { return m_wheel.getMobilizedBodyIndex(); }
+    BevelForces calcShaftForces(const SimTK::State& s) const override {
+        return calcBevelForces(m_p, calcTangentialForce(s));
+    }
 
 private:
     SimTK::MobilizedBody m_pinion, m_wheel;
@@ -121,6 +158,35 @@ public:
 private:
     SimTK::ConstrainedMobilizerIndex m_mob1, m_mob2;
     double m_c1, m_c2;
+};
+
+/// The rigid law's BevelShaftLoads: a force element that applies nothing
+/// (the constraint turns the gears) and reads F_t from the constraint's
+/// multiplier, so ShaftBearings finds the rigid mesh as the compliant one.
+class BevelRigidShaftLoads : public SimTK::Force::Custom::Implementation, public BevelShaftLoads {
+public:
+    BevelRigidShaftLoads(const SimTK::SimbodyMatterSubsystem& matter, SimTK::ConstraintIndex constraint,
+                         const SimTK::MobilizedBody& pinion, const SimTK::MobilizedBody& wheel, const BevelGearParams& p)
+        : m_matter(matter), m_constraint(constraint), m_pinion(pinion.getMobilizedBodyIndex()),
+          m_wheel(wheel.getMobilizedBodyIndex()), m_p(p) {}
+    void calcForce(const SimTK::State&, SimTK::Vector_<SimTK::SpatialVec>&, SimTK::Vector_<SimTK::Vec3>&,
+                   SimTK::Vector&) const override {}
+    SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+    const BevelGearParams& bevelParams() const override { return m_p; }
+    SimTK::MobilizedBodyIndex pinionIndex() const override { return m_pinion; }
+    SimTK::MobilizedBodyIndex wheelIndex() const override { return m_wheel; }
+    double calcTangentialForce(const SimTK::State& s) const {
+        return m_matter.getConstraint(m_constraint).getMultipliersAsVector(s)[0];
+    }
+    BevelForces calcShaftForces(const SimTK::State& s) const override {
+        return calcBevelForces(m_p, calcTangentialForce(s));
+    }
+
+private:
+    const SimTK::SimbodyMatterSubsystem& m_matter;
+    SimTK::ConstraintIndex m_constraint;
+    SimTK::MobilizedBodyIndex m_pinion, m_wheel;
+    BevelGearParams m_p;
 };
 
 }  // namespace milldyn

@@ -124,7 +124,7 @@ void buildClutch(const ElementSpec& spec, Scene& scene) {
     p.regularisationSpeed = spec.number("regularisation_speed");
     p.kineticCapacity = spec.number("kinetic_capacity");
     p.stribeckSpeed = spec.number("stribeck_speed");
-    p.schedule = Schedule::fromSpec(spec);
+    p.schedule = Schedule::fromSpecUntriggered(spec);
     addScheduleBreakpoints(scene, p.schedule, spec.name);
     auto* impl = new Clutch(scene.forces(), from->mobod, to->mobod, p);
     SimTK::Force::Custom force(scene.forces(), impl);

@@ -157,6 +157,114 @@ TEST(BevelGearPair, CompliantMeshNaturalFrequency) {
     EXPECT_NEAR(lm.naturalFrequencies[1], w, 1e-6 * w);
 }
 
+// ShaftBearings with `mesh:` (issue 32 item 2): the tooth forces reach both
+// shafts' bearings. Pinion overhung (mean point at z 0, bearings at 0.15 and
+// 0.45 m, mean point at 30 deg), wheel straddle-mounted (-0.3 and 0.4 m,
+// mean point at z 0.1 m and 200 deg, its +z towards the apex, bearing 2
+// locating), against the textbook tooth forces and the shafts' statics
+// (validation/oracles/BevelGearOracle: bevelShaftReactions).
+std::string withBearings(const std::string& extra) {
+    std::string text = pair(", spiral_angle: 35 deg, wheel_axis: towards_apex" + extra);
+    return test::replacedIn(
+        text, "scenario:",
+        "  - {type: ShaftBearings, name: pb, body: pinion, positions: [0.15 m, 0.45 m], mesh: bevel, mesh_position: "
+        "0 m, mesh_angle: 30 deg}\n"
+        "  - {type: ShaftBearings, name: wb, body: wheel, positions: [-0.3 m, 0.4 m], thrust_bearing: bearing_2, "
+        "mesh: bevel, mesh_position: 0.1 m, mesh_angle: 200 deg}\nscenario:");
+}
+
+TEST(BevelGearPair, ShaftBearingsCarryTheToothForces) {
+    for (const std::string hand : {"right", "left"}) {
+        for (const std::string law : {"", ", law: compliant, mesh_stiffness: 1e9 N/m, mesh_damping: 1e4 N*s/m"}) {
+            SCOPED_TRACE(hand + law);
+            const Steady st = steadyOf(withBearings(", hand: " + hand + law));
+            ASSERT_GT(st.pinion, 150);
+            oc::BevelPairModel m;
+            m.pinionTeeth = 17;
+            m.gearTeeth = 53;
+            m.pinionMeanRadius = 0.1;
+            m.shaftAngle = 90 * kDeg;
+            m.normalPressureAngle = 20 * kDeg;
+            m.spiralAngle = 35 * kDeg;
+            m.pinionRightHand = hand == "right";
+            m.pinionClockwiseFromLargeEnd = false;
+            const oc::BevelLoads f = oc::bevelLoads(m, 5000 * 17.0 / 53.0);
+            // The pinion drives turning +z-wise: the force on it is along −e_θ;
+            // the wheel (+z towards the apex) turns +z-wise too and is driven.
+            ASSERT_GT(st.wheel, 0);
+            const auto pin = oc::bevelShaftReactions({0.15, 0.45, 0, 0.1, 1, -1}, f.pinionThrust,
+                                                     f.pinionSeparating, f.tangential);
+            const auto whl = oc::bevelShaftReactions({-0.3, 0.4, 0.1, 0.1 * 53 / 17, -1, 1}, f.gearThrust,
+                                                     f.gearSeparating, f.tangential);
+            const double tol = 1e-8 * f.tangential;
+            auto check = [&](const std::string& e, double th, const oc::BevelShaftReactions& o, int locating) {
+                SCOPED_TRACE(e);
+                const double c = std::cos(th), sn = std::sin(th);
+                const double x1 = st.probe.at(e + ".bearing_1.x_ground"), y1 = st.probe.at(e + ".bearing_1.y_ground");
+                const double x2 = st.probe.at(e + ".bearing_2.x_ground"), y2 = st.probe.at(e + ".bearing_2.y_ground");
+                EXPECT_NEAR(x1 * c + y1 * sn, o.Ay, tol);
+                EXPECT_NEAR(-x1 * sn + y1 * c, o.Az, tol);
+                EXPECT_NEAR(x2 * c + y2 * sn, o.By, tol);
+                EXPECT_NEAR(-x2 * sn + y2 * c, o.Bz, tol);
+                EXPECT_NEAR(st.probe.at(e + ".bearing_1.radial_load"), o.radialA, tol);
+                EXPECT_NEAR(st.probe.at(e + ".bearing_2.radial_load"), o.radialB, tol);
+                EXPECT_NEAR(st.probe.at(e + ".bearing_" + std::to_string(locating) + ".axial_load"), o.thrust, tol);
+                EXPECT_NEAR(st.probe.at(e + ".axial_load"), o.thrust, tol);
+                EXPECT_EQ(st.probe.count(e + ".bearing_" + std::to_string(3 - locating) + ".axial_load"), 0u);
+            };
+            check("pb", 30 * kDeg, pin, 1);
+            check("wb", 200 * kDeg, whl, 2);
+            // Not zero: the loads are there only because of the mesh.
+            EXPECT_GT(st.probe.at("pb.bearing_1.radial_load"), 0.5 * f.tangential);
+        }
+    }
+}
+
+// Without mesh: the shaft's pin reaction alone, which a pure torque leaves
+// at zero: the tooth forces reach the bearings only through mesh:.
+TEST(BevelGearPair, ShaftBearingsWithoutMeshSeeNoToothForce) {
+    std::string text = withBearings(", hand: right");
+    text = test::replacedIn(text, ", mesh: bevel, mesh_position: 0 m, mesh_angle: 30 deg", "");
+    const Steady st = steadyOf(text);
+    EXPECT_NEAR(st.probe.at("pb.bearing_1.radial_load"), 0.0, 1e-9);
+    EXPECT_NEAR(st.probe.at("pb.axial_load"), 0.0, 1e-9);
+    EXPECT_GT(st.probe.at("wb.bearing_1.radial_load"), 1000.0);
+}
+
+TEST(BevelGearPair, ShaftBearingsMeshRefusals) {
+    const std::string ok = withBearings(", hand: right");
+    auto error = [](const std::string& text) {
+        const SpecError e = readErrorOf("b.yaml", text, {});
+        return e.key() + ": " + e.what();
+    };
+    auto buildError = [](const std::string& text) {
+        try {
+            auto scene = buildScene(readText("b.yaml", text, {}));
+            (void)scene;
+        } catch (const std::exception& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_TRUE(contains(error(test::replacedIn(ok, "mesh: bevel, mesh_position: 0 m, ", "mesh: bevel, ")),
+                         "pb.mesh: needs mesh_position"));
+    const std::string noMesh = error(test::replacedIn(ok, "mesh: bevel, mesh_position: 0 m, ", ""));
+    EXPECT_TRUE(contains(noMesh, "pb.mesh_angle: only with mesh")) << noMesh;
+    EXPECT_TRUE(contains(buildError(test::replacedIn(ok, "mesh: bevel, mesh_position: 0 m", "mesh: spur, mesh_position: 0 m")),
+                         "no BevelGearPair named 'spur' listed before this element"));
+    // Listed before the bevel pair: refused, saying so.
+    const std::string pb = "  - {type: ShaftBearings, name: pb, body: pinion, positions: [0.15 m, 0.45 m], mesh: bevel, "
+                           "mesh_position: 0 m, mesh_angle: 30 deg}\n";
+    std::string early = test::replacedIn(ok, pb, "");
+    early = test::replacedIn(early, "elements:\n", "elements:\n" + pb);
+    EXPECT_TRUE(contains(buildError(early), "no BevelGearPair named 'bevel' listed before this element"));
+    std::string other = test::replacedIn(ok, "  - {type: ShaftBearings, name: pb, body: pinion",
+                                         "  - {type: ShaftBearings, name: pb, body: pinion2");
+    other = test::replacedIn(other, "elements:\n", "  - {name: pinion2, inertia: 1 kg*m^2, joint: {type: pin, parent: "
+                                                  "ground, location: [3 m, 0 m, 0 m]}}\nelements:\n");
+    EXPECT_TRUE(contains(buildError(other), "'pinion2' is neither the pinion nor the wheel of bevel"));
+}
+
 TEST(BevelGearPair, RefusesBadInput) {
     EXPECT_TRUE(contains(readErrorOf("b.yaml", pair(", hand: left"), {}).what(), "has no hand"));
     EXPECT_TRUE(contains(readErrorOf("b.yaml", pair(", mesh_stiffness: 1e9 N/m"), {}).what(), "not used by law: rigid"));

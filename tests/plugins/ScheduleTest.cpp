@@ -261,6 +261,60 @@ TEST(ScheduledLoad, ABedCollapseStepIsLocatedAndItsDeficitMatchesTheClosedForm) 
     }
 }
 
+TEST(ScheduledLoad, ABreakawayResistanceFollowsItsScheduleAsTheClosedFormSays) {
+    // Far above its release speed (100 rad/s against 0.1) the law is the
+    // running torque M_r = 30 N*m (exp(−10⁶) = 0, tanh(10⁵) = 1): the same
+    // bed collapse as above, ω = ω0 − (M_r/J)·(t − d·Tr/2) after it.
+    const double J = 2, w0 = 100, Mr = 30, ts = 1.2345, d = 0.5, Tr = 0.4;
+    const AnalysisResult r = runAnalysis(readModelText(
+        oneShaft("  - type: BreakawayResistance\n"
+                 "    name: load\n"
+                 "    body: drum\n"
+                 "    static_torque: 80 N*m\n"
+                 "    running_torque: 30 N*m\n"
+                 "    schedule: {step_recovery: {at: 1.2345 s, drop: 0.5, recovery_time: 0.4 s}}\n"),
+        "schedule.yaml", defaultModelReader()));
+    EXPECT_NEAR(valueAt(r, "drum.speed", ts), w0 - Mr / J * ts, 1e-6);
+    EXPECT_NEAR(valueAt(r, "load.torque", ts + Tr), Mr, 1e-9);
+    const std::size_t last = r.rows.size() - 1;
+    EXPECT_NEAR(r.value(last, "drum.speed"), w0 - Mr / J * (3.0 - d * Tr / 2), 1e-6);
+    // The torque at a sample inside the recovery, against f(t)·M_r.
+    for (std::size_t i = 0; i < r.rows.size(); ++i) {
+        const double t = r.value(i, "time");
+        if (t > ts + 1e-9 && t < ts + Tr - 1e-9) {
+            EXPECT_NEAR(r.value(i, "load.torque"), Mr * (1 - d * (1 - (t - ts) / Tr)), 1e-9) << t;
+        }
+    }
+}
+
+TEST(ScheduledLoad, ARampedDiscDragFollowsTheClosedFormSpeed) {
+    // Laminar disc drag T = c·ω^(3/2), c = 0.616·π·ρ·r⁴·k·√ν (seed 001
+    // eq 1), times a ramp f from 0 to 1 over [0.35, 1.35] s:
+    // J·dω/dt = −f(t)·c·ω^(3/2)  ⇒  ω^(−1/2) = ω0^(−1/2) + (c/(2J))·∫0^t f.
+    const double J = 2, w0 = 100, t0 = 0.35, T = 1.0, rho = 1000, nu = 1e-6, r4 = std::pow(0.2, 4), k = 10;
+    const double c = 0.616 * kPi * rho * r4 * k * std::sqrt(nu);
+    const AnalysisResult r = runAnalysis(readModelText(oneShaft("  - type: DiscDrag\n"
+                                                                "    name: drag\n"
+                                                                "    body: drum\n"
+                                                                "    medium_density: 1000 kg/m^3\n"
+                                                                "    medium_viscosity: 1e-6 m^2/s\n"
+                                                                "    disc_diameter: 0.4 m\n"
+                                                                "    discs: 10\n"
+                                                                "    schedule: {ramp: {start: 0.35 s, duration: 1 s}}\n"),
+                                                       "schedule.yaml", defaultModelReader()));
+    auto omega = [&](double t) {
+        const double x = 1 / std::sqrt(w0) + c / (2 * J) * rampIntegral(t, t0, T);
+        return 1 / (x * x);
+    };
+    ASSERT_LT(omega(3.0), w0 - 10);  // the drag is felt: a test that can fail
+    for (double t : {0.3, 0.8, 1.3, 2.0, 3.0}) {
+        EXPECT_NEAR(valueAt(r, "drum.speed", t), omega(t), 1e-6) << t;
+        const double f = t <= t0 ? 0.0 : std::min(1.0, (t - t0) / T);
+        const double w = valueAt(r, "drum.speed", t);
+        EXPECT_NEAR(valueAt(r, "drag.torque", t), f * c * std::pow(w, 1.5), 1e-9) << t;
+    }
+}
+
 TEST(ScheduledBrake, BrakeCapacityOnATableStopsTheDrumAsTheClosedFormSays) {
     // Brake capacity 40 N*m times a table 0 → 1 over [0.5, 1.0] s, then 1:
     // ω(t) = ω0 − (Mb/J)·∫f: 100 − 20·(t − 0.5)²/(2·0.5) on the ramp,
@@ -362,6 +416,86 @@ TEST(ClutchStickSlip, TwoInertiasStickSlipAndLockWhereTheSpeedsMeet) {
         }
     }
     EXPECT_NEAR(lockTime, 2.25, 0.005);  // the 5 ms sampling
+}
+
+// ---------------------------------------------------------------------------
+// A schedule started by an event (`after: {shaft, speed}`).
+
+/// One inertia J = 2 kg*m^2 from rest, driven by 20 N*m: ω = 10 t, so it
+/// passes 15 rad/s at t_c = 1.5 s exactly; a 10 N*m load on a ramp 0 → 1
+/// over [0.25, 0.75] s of its clock, which starts there.
+/// `text` with its one `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return text;
+}
+
+std::string runUp(const std::string& speed, const std::string& interval) {
+    return "format_version: 1\n"
+           "name: triggered schedule\n"
+           "bodies:\n"
+           "  - {name: drum, inertia: 2 kg*m^2, joint: {type: pin, parent: ground}}\n"
+           "elements:\n"
+           "  - {type: AppliedTorque, name: drive, body: drum, torque: 20 N*m}\n"
+           "  - type: ResistanceTorque\n"
+           "    name: load\n"
+           "    body: drum\n"
+           "    constant_torque: 10 N*m\n"
+           "    smoothing_speed: 1e-3 rad/s\n"
+           "    schedule: {ramp: {start: 0.25 s, duration: 0.5 s}, after: {shaft: drum, speed: " + speed + "}}\n"
+           "scenario: {analysis: transient, end_time: 3 s, speed_body: drum}\n"
+           "integrator: {name: CPodes, accuracy: 1e-8}\n"
+           "outputs: {sample_interval: " + interval + "}\n";
+}
+
+TEST(TriggeredSchedule, ARampAfterTheRunUpStartsWhereTheShaftPassesItsSpeed) {
+    // ω(t) = 10 t − (10/2)·∫ f(τ − t_c) dτ, f the ramp on the clock τ − t_c.
+    const double tc = 1.5;
+    for (const char* interval : {"0.1 s", "0.0371 s"}) {
+        SCOPED_TRACE(interval);
+        const AnalysisResult r = runAnalysis(readModelText(runUp("15 rad/s", interval), "t.yaml", defaultModelReader()));
+        const ResultScalar* start = nullptr;
+        for (const auto& x : r.results)
+            if (x.name == "load.schedule_start_time") start = &x;
+        ASSERT_NE(start, nullptr);
+        EXPECT_NEAR(start->value, tc, 1e-9);
+        for (std::size_t i = 0; i < r.rows.size(); ++i) {
+            const double t = r.value(i, "time");
+            const double local = std::max(0.0, t - tc);
+            const double w = 10 * t - 5 * rampIntegral(local, 0.25, 0.5);
+            EXPECT_NEAR(r.value(i, "drum.speed"), w, 1e-6) << t;
+            const double f = std::min(std::max((local - 0.25) / 0.5, 0.0), 1.0);
+            EXPECT_NEAR(r.value(i, "load.torque"), 10 * f, 1e-6) << t;
+            EXPECT_NEAR(r.value(i, "load.schedule_clock"), local, 1e-9) << t;
+        }
+        // The ramp's ends are on the trajectory (located events): the
+        // closed form at 3 s has both kinks in it.
+        EXPECT_NEAR(r.value(r.rows.size() - 1, "drum.speed"), 30 - 5 * rampIntegral(1.5, 0.25, 0.5), 1e-6);
+    }
+}
+
+TEST(TriggeredSchedule, ATriggerThatNeverFiresSaysSoAndHoldsTheFactor) {
+    const AnalysisResult r = runAnalysis(readModelText(runUp("100 rad/s", "0.1 s"), "t.yaml", defaultModelReader()));
+    for (std::size_t i = 0; i < r.rows.size(); ++i) {
+        EXPECT_NEAR(r.value(i, "drum.speed"), 10 * r.value(i, "time"), 1e-6);
+        EXPECT_EQ(r.value(i, "load.torque"), 0.0);
+    }
+    bool said = false;
+    for (const auto& n : r.notes) said = said || n.find("never started") != std::string::npos;
+    EXPECT_TRUE(said);
+    for (const auto& x : r.results) EXPECT_NE(x.name, "load.schedule_start_time");
+}
+
+TEST(TriggeredSchedule, BadTriggersAreOneLocatedError) {
+    std::string text = runUp("15 rad/s", "0.1 s");
+    SpecError e = readError(replaced(text, "after: {shaft: drum,", "after: {shaft: drun,"));
+    EXPECT_EQ(e.key(), "load.schedule.after.shaft");
+    e = readError(replaced(text, "speed: 15 rad/s", "speed: 15 s"));
+    EXPECT_EQ(e.key(), "load.schedule.after.speed");
+    e = readError(replaced(text, "speed: 15 rad/s}", "speed: 15 rad/s, at: 1 s}"));
+    EXPECT_EQ(e.key(), "load.schedule.after.at");
 }
 
 }  // namespace

@@ -9,7 +9,9 @@
 //  - planetary_stage_frequencies: natural frequencies against the torsional model;
 //  - planetary_stage_vrm_statics: the mill's planet mesh forces and bearing loads;
 //  - planetary_stage_vrm_planet_mode: the mill's planet mode (multiplicity 2);
-//  - bevel_vrm_forces, bevel_straight_shaft_angle_70: tooth forces on both shafts.
+//  - bevel_vrm_forces, bevel_straight_shaft_angle_70: tooth forces on both shafts;
+//  - bevel_shaft_bearings_*_hand, bevel_vrm_bearings: the tooth forces on the
+//    shafts' bearings (ShaftBearings with mesh:) against the shafts' statics.
 
 #include "driver/ModelFile.h"
 #include "driver/SceneBuilder.h"
@@ -250,6 +252,100 @@ void straightBevel(std::vector<ValidationRow>& rows) {
                               "-z2/z1, both axes away from the apex"));
 }
 
+// One shaft's bearing rows: milldyn's ShaftBearings (its x/y_ground in the
+// pin frame, which is ground's here) projected on the oracle's y (towards the
+// mean point, angle theta) and z (tangential), and its thrust.
+void bearingRows(std::vector<ValidationRow>& rows, const std::string& name, const Steady& st,
+                 const std::string& element, double theta, const oc::BevelShaftReactions& o, double scale,
+                 int locating) {
+    const double c = std::cos(theta), s = std::sin(theta);
+    auto row = [&](const std::string& what, double model, double oracle) {
+        ValidationRow r = compareRow(name, what, "N", model, oracle, kStaticsTolerance, "error relative to W_t");
+        rows.push_back(withError(r, std::abs(model - oracle) / scale));
+    };
+    const std::string b1 = element + ".bearing_1.", b2 = element + ".bearing_2.";
+    auto along = [&](const std::string& b, double cy, double cz) {
+        return st.probe.at(b + "x_ground") * cy + st.probe.at(b + "y_ground") * cz;
+    };
+    row(element + " bearing 1 towards the mean point", along(b1, c, s), o.Ay);
+    row(element + " bearing 1 tangential", along(b1, -s, c), o.Az);
+    row(element + " bearing 2 towards the mean point", along(b2, c, s), o.By);
+    row(element + " bearing 2 tangential", along(b2, -s, c), o.Bz);
+    row(element + " bearing 1 radial load", st.probe.at(b1 + "radial_load"), o.radialA);
+    row(element + " bearing 2 radial load", st.probe.at(b2 + "radial_load"), o.radialB);
+    row(element + " thrust (locating bearing " + std::to_string(locating) + ")",
+        st.probe.at(element + ".bearing_" + std::to_string(locating) + ".axial_load"), o.thrust);
+}
+
+// A spiral bevel (Σ 90°, β 30°) on shafts with bearings, pinion overhung,
+// wheel straddle-mounted, the mean points off the frames' x: the bearings'
+// forces against the textbook tooth forces and the shafts' statics.
+void shaftBearings(std::vector<ValidationRow>& rows, const std::string& hand) {
+    const std::string name = "bevel_shaft_bearings_" + hand + "_hand";
+    const double thP = 30 * kDeg, thW = 200 * kDeg;
+    const std::string text =
+        "format_version: 1\nname: bevel bearings\nbodies:\n"
+        "  - {name: pinion, inertia: 1.5 kg*m^2, joint: {type: pin, parent: ground}}\n"
+        "  - {name: wheel, inertia: 40 kg*m^2, joint: {type: pin, parent: ground, location: [1 m, 0 m, 0 m]}}\n"
+        "elements:\n"
+        "  - {type: InductionMotor, name: motor, body: pinion, law: linear, rated_torque: 3000 N*m, rated_speed: 1485 "
+        "rpm, synchronous_speed: 1500 rpm}\n"
+        "  - {type: BevelGearPair, name: bevel, bodies: [pinion, wheel], teeth: [17, 53], mean_pitch_radius: 0.1 m, "
+        "spiral_angle: 30 deg, hand: " + hand + ", wheel_axis: towards_apex}\n"
+        "  - {type: ResistanceTorque, name: load, body: wheel, constant_torque: 5000 N*m}\n"
+        "  - {type: ShaftBearings, name: pinion_bearings, body: pinion, positions: [0.15 m, 0.45 m], mesh: bevel, "
+        "mesh_position: 0 m, mesh_angle: 30 deg}\n"
+        "  - {type: ShaftBearings, name: wheel_bearings, body: wheel, positions: [-0.3 m, 0.4 m], thrust_bearing: "
+        "bearing_2, mesh: bevel, mesh_position: 0.1 m, mesh_angle: 200 deg}\n"
+        "scenario: {analysis: transient, end_time: 1 s}\n";
+    const Steady st = steadyOfText(text);
+    oc::BevelPairModel m;
+    m.pinionTeeth = 17;
+    m.gearTeeth = 53;
+    m.pinionMeanRadius = 0.1;
+    m.shaftAngle = 90 * kDeg;
+    m.normalPressureAngle = 20 * kDeg;
+    m.spiralAngle = 30 * kDeg;
+    m.pinionRightHand = hand == "right";
+    const double wp = st.speed.at("pinion"), ww = st.speed.at("wheel");
+    m.pinionClockwiseFromLargeEnd = wp < 0;
+    const oc::BevelLoads f = oc::bevelLoads(m, 5000 * 17.0 / 53.0);
+    // Pinion: +z away from the apex, driving (force against its turning);
+    // wheel: +z towards the apex (wheel_axis), driven (force with its turning).
+    const oc::BevelShaftModel pin{0.15, 0.45, 0, 0.1, 1, wp > 0 ? -1.0 : 1.0};
+    const oc::BevelShaftModel whl{-0.3, 0.4, 0.1, 0.1 * 53 / 17, -1, ww > 0 ? 1.0 : -1.0};
+    bearingRows(rows, name, st, "pinion_bearings", thP,
+                oc::bevelShaftReactions(pin, f.pinionThrust, f.pinionSeparating, f.tangential), f.tangential, 1);
+    bearingRows(rows, name, st, "wheel_bearings", thW,
+                oc::bevelShaftReactions(whl, f.gearThrust, f.gearSeparating, f.tangential), f.tangential, 2);
+}
+
+// The mill's bevel shafts (models/parts/vertical_roller_mill_train.yaml):
+// the pinion overhung (mean point at z 0, bearings at 0.3 and 0.8 m, mean
+// point below the axis: -90 deg), the sun shaft's wheel between its bearings
+// (-0.5 and 0.9 m, the mean point at z 0 towards +x, +z towards the apex).
+void millBevelBearings(std::vector<ValidationRow>& rows, const Steady& st) {
+    oc::BevelPairModel m;
+    m.pinionTeeth = 17;
+    m.gearTeeth = 85;
+    m.pinionMeanRadius = 0.16;
+    m.shaftAngle = 90 * kDeg;
+    m.normalPressureAngle = 20 * kDeg;
+    m.spiralAngle = 35 * kDeg;
+    m.pinionRightHand = true;
+    const double wp = st.speed.at("bevel_pinion"), ww = st.speed.at("sun_shaft");
+    m.pinionClockwiseFromLargeEnd = wp < 0;
+    const double wt = st.speed.at("table"), TL = 1.1e6 + 7.3e4 * wt;
+    const double Ts = TL * kMillZs / (kMillZs + kMillZr);
+    const oc::BevelLoads f = oc::bevelLoads(m, Ts * 17 / 85);
+    const oc::BevelShaftModel pin{0.3, 0.8, 0, 0.16, 1, wp > 0 ? -1.0 : 1.0};
+    const oc::BevelShaftModel sun{-0.5, 0.9, 0, 0.8, -1, ww > 0 ? 1.0 : -1.0};
+    bearingRows(rows, "bevel_vrm_bearings", st, "pinion_bearings", -90 * kDeg,
+                oc::bevelShaftReactions(pin, f.pinionThrust, f.pinionSeparating, f.tangential), f.tangential, 1);
+    bearingRows(rows, "bevel_vrm_bearings", st, "sun_shaft_bearings", 0,
+                oc::bevelShaftReactions(sun, f.gearThrust, f.gearSeparating, f.tangential), f.tangential, 1);
+}
+
 }  // namespace
 
 std::vector<ValidationRow> gearboxCases(const std::string& filter) {
@@ -261,14 +357,17 @@ std::vector<ValidationRow> gearboxCases(const std::string& filter) {
     if (want("planetary_stage_load_sharing")) loadSharing(rows);
     if (want("planetary_stage_frequencies")) frequencies(rows);
     const bool statics = want("planetary_stage_vrm_statics"), mode = want("planetary_stage_vrm_planet_mode"),
-               bevel = want("bevel_vrm_forces");
-    if (statics || mode || bevel) {
+               bevel = want("bevel_vrm_forces"), bearings = want("bevel_vrm_bearings");
+    if (statics || mode || bevel || bearings) {
         const Steady st = millSteady(mode);
         if (statics) millStatics(rows, st);
         if (mode) millPlanetMode(rows, st);
         if (bevel) millBevel(rows, st);
+        if (bearings) millBevelBearings(rows, st);
     }
     if (want("bevel_straight_shaft_angle_70")) straightBevel(rows);
+    for (const std::string hand : {"right", "left"})
+        if (want("bevel_shaft_bearings_" + hand + "_hand")) shaftBearings(rows, hand);
     return rows;
 }
 

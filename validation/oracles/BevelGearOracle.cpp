@@ -24,4 +24,20 @@ BevelLoads bevelLoads(const BevelPairModel& m, double pinionTorque) {
     return out;
 }
 
+BevelShaftReactions bevelShaftReactions(const BevelShaftModel& m, double thrust, double separating, double tangential) {
+    BevelShaftReactions out;
+    const double span = m.bearingB - m.bearingA, arm = m.meshPosition - m.bearingA;
+    const double Fx = m.apexSide * thrust, Fy = -separating, Fz = m.tangentialSense * tangential;
+    // xy plane, moments about A (+z): span·B_y + arm·F_y − r·F_x = 0.
+    out.By = (m.meanRadius * Fx - arm * Fy) / span;
+    out.Ay = -Fy - out.By;
+    // xz plane, moments about A (+y): −span·B_z − arm·F_z = 0.
+    out.Bz = -arm * Fz / span;
+    out.Az = -Fz - out.Bz;
+    out.radialA = std::hypot(out.Ay, out.Az);
+    out.radialB = std::hypot(out.By, out.Bz);
+    out.thrust = -Fx;
+    return out;
+}
+
 }  // namespace milldyn::oracles

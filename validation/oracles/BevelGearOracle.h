@@ -43,4 +43,41 @@ struct BevelLoads {
 /// The pinion drives with torque |T| [N m].
 BevelLoads bevelLoads(const BevelPairModel& m, double pinionTorque);
 
+/// A gear shaft on two bearings A and B (a straddle- or overhung-mounted
+/// bevel gear), its axis the x of a right-handed frame (x, y, z): the mean
+/// point at x_m, at distance r from the axis along +y.
+struct BevelShaftModel {
+    double bearingA = 0, bearingB = 0;  ///< x_A, x_B [m], A != B
+    double meshPosition = 0;            ///< x_m [m]
+    double meanRadius = 0;              ///< r [m]
+    double apexSide = 1;  ///< +1: "away from the apex" is +x; −1: −x
+    /// +1: the mesh's tangential force on this gear points along +z (the
+    /// gear is driven and turns +x-wise, or drives and turns −x-wise); −1: −z.
+    double tangentialSense = 1;
+};
+
+/// The bearings' forces on the shaft: y components in the plane of the
+/// axis and the mean point (+y: towards the mean point), z components
+/// tangential.
+struct BevelShaftReactions {
+    double Ay = 0, Az = 0, By = 0, Bz = 0;  ///< [N]
+    double radialA = 0, radialB = 0;        ///< |(Ay, Az)|, |(By, Bz)| [N]
+    double thrust = 0;                      ///< on the shaft along +x, all at the locating bearing [N]
+};
+
+/**
+ * Statics of the shaft as in Shigley, Mechanical Engineering Design,
+ * Example 13-8 (bearing forces on a bevel gear shaft, one bearing taking the
+ * thrust): the tooth force at (x_m, r, 0) is
+ * (apexSide·W_a, −W_r, tangentialSense·W_t) — the thrust away from the apex,
+ * the separating force towards the gear's own axis; moments about A:
+ * <pre>
+ *   xy plane:  (x_B − x_A) B_y − (x_m − x_A) W_r − r·apexSide·W_a = 0,   A_y = W_r − B_y
+ *   xz plane:  (x_B − x_A) B_z + (x_m − x_A) W_tz = 0,                   A_z = −W_tz − B_z
+ *   thrust:    −apexSide·W_a
+ * </pre>
+ * (the xy-plane moment of the thrust W_a at height r is −r·apexSide·W_a about +z).
+ */
+BevelShaftReactions bevelShaftReactions(const BevelShaftModel& m, double thrust, double separating, double tangential);
+
 }  // namespace milldyn::oracles
