@@ -478,10 +478,11 @@ int commandInfo(const Arguments& a, std::ostream& out) {
 }
 
 /// The sweep's plots join its output files; what could not be drawn is a warning.
-void addSweepPlots(bool plots, SweepLayout layout, const std::string& dir, SweepSummary& summary, std::ostream& err) {
+void addSweepPlots(bool plots, SweepLayout layout, const std::string& dir, SweepSummary& summary, std::ostream& err,
+                   const std::vector<std::string>& select = {}) {
     if (!plots) return;
     std::string warning;
-    const auto files = writeSweepPlots(dir, layout, warning);
+    const auto files = writeSweepPlots(dir, layout, warning, select);
     summary.files.insert(summary.files.end(), files.begin(), files.end());
     if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
 }
@@ -497,7 +498,8 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
     checkSweepPaths(plan.axes, a.overrides);
     // The model and the grid's units are checked before hundreds of points
     // report the same error.
-    const bool plots = checkSweepPlan(plan, a.model, a.overrides).outputs.plots && !a.noPlots;
+    const ModelSpec checked = checkSweepPlan(plan, a.model, a.overrides);
+    const bool plots = checked.outputs.plots && !a.noPlots;
 
     SweepOptions options;
     options.model = a.model;
@@ -533,7 +535,7 @@ int commandSweep(const Arguments& a, std::ostream& out, std::ostream& err) {
     if (showProgress) err << "\r" << std::string(50, ' ') << "\r";
     const bool tied = std::any_of(plan.axes.begin(), plan.axes.end(), [](const SweepAxis& x) { return x.tiedToPrevious; });
     addSweepPlots(plots, !plan.cartesian || tied ? SweepLayout::Sample : a.shardCount > 1 ? SweepLayout::Infer : SweepLayout::Grid,
-                  options.outDir, summary, err);
+                  options.outDir, summary, err, checked.outputs.sweepPlots);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (!a.quiet)
         out << "sweep of " << a.model << ": " << summary.total << " points (" << summary.run << " run, "

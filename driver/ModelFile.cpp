@@ -1000,6 +1000,7 @@ private:
         if (n["peaks"]) readNames(n["peaks"], "outputs.peaks", out.peaks, out.peakWhere);
         if (n["statistics"]) readNames(n["statistics"], "outputs.statistics", out.statistics, out.statisticsWhere);
         if (n["statistics_period"]) readStatisticsPeriod(n["statistics_period"], out);
+        if (n["sweep_plots"]) readNames(n["sweep_plots"], "outputs.sweep_plots", out.sweepPlots, out.sweepPlotsWhere);
     }
 
     /// `statistics_period: auto | hold | <time> | revolutions of BODY`
@@ -1438,7 +1439,8 @@ const ModelFileKeys& modelFileKeys() {
         {"name", "inertia", "mass", "mass_centre", "joint", "initial_angle", "initial_speed", "fidelity"},
         {"type", "parent", "location"},
         {"name", "accuracy", "max_step"},
-        {"sample_interval", "plots", "columns", "energy_balance", "peaks", "statistics", "statistics_period"},
+        {"sample_interval", "plots", "columns", "energy_balance", "peaks", "statistics", "statistics_period",
+         "sweep_plots"},
         {"level", "levels"},
         {"why", "set"},
         {"file", "prefix", "set"},

@@ -78,6 +78,12 @@ struct OutputSpec {
     double statisticsPeriodTime = 0;  ///< [s]
     std::string statisticsPeriodBody;
     SourceLocation statisticsPeriodWhere;
+    /// `sweep_plots:` the results a sweep draws (sweep_NAME.png): result
+    /// names, NAME* for every name it begins, `headline` (the default: the
+    /// verdict, steady values, peaks, power and statistics; no energy
+    /// bookkeeping nor last-instant values) and `all`.
+    std::vector<std::string> sweepPlots;
+    std::vector<SourceLocation> sweepPlotsWhere;
     /// `energy_balance:` build the energy meter for analyses that report
     /// an energy balance (its integrals are states every step carries).
     bool energyBalance = true;

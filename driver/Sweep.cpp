@@ -217,7 +217,12 @@ Json sweepManifest(const SweepPlan& plan, const SweepOptions& options) {
     std::vector<Override> forDigest = identity;
     forDigest.push_back({"outputs.plots", "true"});
     std::string resolved;
-    readModelFile(options.model, defaultModelReader(), forDigest, &resolved);
+    // outputs.sweep_plots in the file likewise (set one way only when the
+    // file has it, so the digest of a model without it is unchanged).
+    if (!readModelFile(options.model, defaultModelReader(), forDigest, &resolved).outputs.sweepPlots.empty()) {
+        forDigest.push_back({"outputs.sweep_plots", "headline"});
+        readModelFile(options.model, defaultModelReader(), forDigest, &resolved);
+    }
     Json overrides = Json::array();
     for (const auto& o : identity) overrides.push_back(o.path + "=" + o.value);
     Json axes = Json::array();
@@ -423,7 +428,9 @@ std::vector<SweepAxis> parseRangeAxes(const std::string& text) {
     return axes;
 }
 
-bool isPresentationPath(const std::string& path) { return path == "outputs.plots"; }
+bool isPresentationPath(const std::string& path) {
+    return path == "outputs.plots" || path == "outputs.sweep_plots";
+}
 
 void checkSweepPaths(const std::vector<SweepAxis>& axes, const std::vector<Override>& base) {
     for (std::size_t a = 0; a < axes.size(); ++a) {

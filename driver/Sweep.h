@@ -86,8 +86,9 @@ struct SweepOptions {
 };
 
 /// The override paths that are no part of a sweep's identity (its digest):
-/// outputs.plots (a sweep's points draw nothing; `--no-plots` and
-/// `--set outputs.plots=false` both only skip the sweep_*.png).
+/// outputs.plots and outputs.sweep_plots (a sweep's points draw nothing;
+/// `--no-plots` and `--set outputs.plots=false` both only skip the
+/// sweep_*.png, outputs.sweep_plots only chooses them).
 bool isPresentationPath(const std::string& path);
 
 struct SweepSummary {

@@ -39,6 +39,38 @@ struct NamedMatrix {
     std::vector<std::vector<double>> rows;
 };
 
+/// A curve of a figure's panel: one column of the main table, or the sum of
+/// several (the loads on one shaft), drawn from the table's CSV.
+struct PlotCurve {
+    std::string title;
+    std::vector<std::size_t> columns;  ///< one: that column; several: their sum
+};
+/// One panel of a figure: curves of one quantity in one unit; torques of
+/// one shaft only (issue 29 item 3: torques on different shafts never share
+/// a panel).
+struct PlotPanel {
+    std::string title;   ///< "torques on mill"
+    std::string yLabel;  ///< "torque [N*m]"
+    std::string shaft;   ///< the body whose torques these are; empty for other quantities
+    std::vector<PlotCurve> curves;
+};
+/// A vertical line at an instant the summary reports (start_time, a starter
+/// step, a sequence's end), drawn at that result's value.
+struct PlotMarker {
+    double x = 0;
+    std::string label;  ///< the result's name: "start_time"
+};
+/// A figure that answers one question (issue 29 item 3): NAME.png, its
+/// panels stacked over one x axis (column 0), over [xFrom, xTo] when
+/// xTo > xFrom, else the whole table.
+struct PlotFigure {
+    std::string name;
+    std::string title;
+    std::vector<PlotPanel> panels;
+    std::vector<PlotMarker> markers;
+    double xFrom = 0, xTo = 0;
+};
+
 struct AnalysisResult {
     std::string analysis;
     /// The main table, written as TABLENAME.csv (plots read it): column i is
@@ -63,6 +95,10 @@ struct AnalysisResult {
     RunStatistics statistics;
     /// The columns worth a plot (indices into columnNames) and their titles.
     std::vector<std::pair<std::string, std::vector<std::size_t>>> plots;
+    /// Figures per question (start, steady operation, torques per shaft,
+    /// belts, currents): a figure named as a plot replaces it, the others
+    /// are drawn after the plots.
+    std::vector<PlotFigure> figures;
     /// The quantity on the plots' x axis (column 0 of the main table).
     std::string plotXLabel = "time [s]";
     std::vector<DataTable> extraTables;

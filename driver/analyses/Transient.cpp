@@ -6,6 +6,7 @@
 #include "driver/analyses/MotorReports.h"
 #include "driver/analyses/SteadyStart.h"
 #include "driver/analyses/Trajectory.h"
+#include "driver/analyses/TransientFigures.h"
 #include "driver/analyses/WindowStatistics.h"
 #include "plugins/scene/Format.h"
 
@@ -135,6 +136,8 @@ struct HoldCheck {
 /// Whole load periods the analysis window must hold for the hold to be
 /// judged on period means (two: one mean alone shows no drift).
 constexpr int kHoldPeriods = 2;
+/// The steady figure shows up to this many whole periods (the last ones).
+constexpr std::size_t kFigurePeriods = 3;
 
 /**
  * The speed is *held* when, over the last hold_time of the start window
@@ -884,6 +887,28 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
         throw AnalysisError(why.str());
     }
     addDefaultPlots(result);
+    // The figures per question (issue 29 item 3): the verdict's instants as
+    // the summary has them, the timed switchings, the last whole periods.
+    TransientFigureTimes figureTimes;
+    figureTimes.fromRest = start == "rest";
+    figureTimes.endTime = last.getTime();
+    figureTimes.speedBody = speedBody.name;
+    for (const auto& e : scene->switchEvents())
+        if (e.kind == Scene::SwitchEvent::Kind::StarterStep)
+            figureTimes.steps.push_back({e.time, e.what});
+        else if (e.kind == Scene::SwitchEvent::Kind::DriveOff)
+            figureTimes.switchOffs.push_back({e.time, e.what});
+    if (windowStatistics.valid() && windowStatistics.periods() > 0) {
+        const auto periods = windowStatistics.periodMeans(0);
+        const std::size_t shown = std::min<std::size_t>(periods.size(), kFigurePeriods);
+        if (shown > 0) {
+            figureTimes.steadyFrom = periods[periods.size() - shown].t0;
+            figureTimes.steadyTo = periods.back().t1;
+            figureTimes.steadyWhat = "the last " + std::to_string(shown) + " whole " + periodRule.what + " (" +
+                                     fmt(figureTimes.steadyFrom) + " to " + fmt(figureTimes.steadyTo) + " s)";
+        }
+    }
+    addTransientFigures(*scene, spec, figureTimes, result);
     return result;
 }
 

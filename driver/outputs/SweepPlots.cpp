@@ -122,7 +122,38 @@ std::string plotFileStem(const std::string& name) {
     return out.empty() ? "_" : out;
 }
 
-std::vector<std::string> writeSweepPlots(const std::string& dir, SweepLayout layout, std::string& warning) {
+bool isHeadlineResult(const std::string& name) {
+    auto begins = [&](const std::string& head) { return name.compare(0, head.size(), head) == 0; };
+    auto ends = [&](const std::string& tail) {
+        return name.size() >= tail.size() && name.compare(name.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    if (begins("energy") || ends("_energy_change") || begins("final.")) return false;
+    if (begins("mean_power.")) return name == "mean_power.motor_input" || name == "mean_power.shaft_input";
+    return true;
+}
+
+std::vector<std::size_t> selectSweepResults(const SweepTable& t, const std::vector<std::string>& select,
+                                            std::vector<std::string>& unmatched) {
+    const std::vector<std::string> asked = select.empty() ? std::vector<std::string>{"headline"} : select;
+    std::vector<bool> chosen(t.resultNames.size(), false);
+    for (const std::string& a : asked) {
+        bool any = false;
+        for (std::size_t r = 0; r < t.resultNames.size(); ++r) {
+            const std::string& n = t.resultNames[r];
+            const bool match = a == "all" || (a == "headline" && isHeadlineResult(n)) || a == n ||
+                               (a.size() > 1 && a.back() == '*' && n.compare(0, a.size() - 1, a, 0, a.size() - 1) == 0);
+            if (match) chosen[r] = any = true;
+        }
+        if (!any) unmatched.push_back(a);
+    }
+    std::vector<std::size_t> out;
+    for (std::size_t r = 0; r < chosen.size(); ++r)
+        if (chosen[r]) out.push_back(r);
+    return out;
+}
+
+std::vector<std::string> writeSweepPlots(const std::string& dir, SweepLayout layout, std::string& warning,
+                                         const std::vector<std::string>& select) {
     std::vector<std::string> written;
     std::ifstream in(dir + "/sweep.csv");
     std::stringstream text;
@@ -145,8 +176,9 @@ std::vector<std::string> writeSweepPlots(const std::string& dir, SweepLayout lay
     if (layout == SweepLayout::Infer) layout = inferSweepLayout(t);
     const std::size_t axes = t.inputNames.size();
     const bool lines = layout == SweepLayout::Grid && axes <= 2;
-    std::vector<std::string> skipped, missing;
-    for (std::size_t r = 0; r < t.resultNames.size(); ++r) {
+    std::vector<std::string> skipped, missing, unmatched;
+    const std::vector<std::size_t> chosen = selectSweepResults(t, select, unmatched);
+    for (std::size_t r : chosen) {
         const bool any = std::any_of(t.results.begin(), t.results.end(),
                                      [&](const std::vector<double>& row) { return std::isfinite(row[r]); });
         if (!any) {
@@ -222,6 +254,12 @@ std::vector<std::string> writeSweepPlots(const std::string& dir, SweepLayout lay
         warning = "no sweep plot of";
         for (const auto& n : skipped) warning += " " + n;
         warning += ": no point has a value";
+    }
+    if (!unmatched.empty()) {
+        std::string list;
+        for (const auto& n : unmatched) list += (list.empty() ? "" : ", ") + n;
+        warning += (warning.empty() ? "" : "; ") + std::string("outputs.sweep_plots: no result named ") + list +
+                   " in sweep.csv (its columns are the results; `all` draws every one)";
     }
     return written;
 }

@@ -37,10 +37,27 @@ std::vector<std::pair<double, std::vector<std::size_t>>> sweepLines(const SweepT
 /// A file-name stem made of letters, digits, '_', '-' and '.' only.
 std::string plotFileStem(const std::string& name);
 
-/// Writes DIR/sweep_<result>.png for every result column of DIR/sweep.csv,
+/// Whether a result is a headline of a sweep (issue 29 item 3): the
+/// verdict, steady values, peaks, power, statistics, natural frequencies...
+/// — every result but the energy bookkeeping (energy*, *_energy_change,
+/// mean_power.* other than motor_input and shaft_input) and the last
+/// instant's values (final.*).
+bool isHeadlineResult(const std::string& name);
+
+/// The result columns of `table` that `select` names (outputs.sweep_plots):
+/// a result name, NAME* for every result whose name begins with NAME,
+/// `headline` for the headline results, `all`; empty: `headline`. In the
+/// table's order. Entries that match no result go to `unmatched`.
+std::vector<std::size_t> selectSweepResults(const SweepTable& table, const std::vector<std::string>& select,
+                                            std::vector<std::string>& unmatched);
+
+/// Writes DIR/sweep_<result>.png for the result columns of DIR/sweep.csv
+/// that `select` names (selectSweepResults; default the headline results),
 /// each atomically. `layout` Infer decides from the table. Returns the files
 /// written; `warning` says what could not be plotted (no gnuplot, no
-/// results). Throws OutputError when a file cannot be written.
-std::vector<std::string> writeSweepPlots(const std::string& dir, SweepLayout layout, std::string& warning);
+/// results, a selection naming no result). Throws OutputError when a file
+/// cannot be written.
+std::vector<std::string> writeSweepPlots(const std::string& dir, SweepLayout layout, std::string& warning,
+                                         const std::vector<std::string>& select = {});
 
 }  // namespace milldyn

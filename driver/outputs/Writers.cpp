@@ -4,6 +4,7 @@
 
 #include "driver/outputs/AtomicFile.h"
 #include "plugins/scene/EngineTag.h"
+#include "plugins/scene/Format.h"
 #include "driver/outputs/OutputSet.h"
 
 #include <nlohmann/json.hpp>
@@ -282,12 +283,23 @@ bool writeModeShapePlot(const std::string& png, const std::vector<ModeShapeBars>
 }  // namespace
 
 std::string panelYAxisCommands(const AnalysisResult& result, const std::vector<std::size_t>& columns, double scale) {
+    std::vector<std::vector<double>> curves;
+    for (std::size_t col : columns) {
+        std::vector<double> v;
+        for (const auto& row : result.rows)
+            if (col < row.size()) v.push_back(scale * row[col]);
+        curves.push_back(v);
+    }
+    return yAxisCommands(curves);
+}
+
+std::string yAxisCommands(const std::vector<std::vector<double>>& curves) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const auto& row : result.rows)
-        for (std::size_t col : columns)
-            if (col < row.size() && std::isfinite(row[col])) {
-                lo = std::min(lo, scale * row[col]);
-                hi = std::max(hi, scale * row[col]);
+    for (const auto& c : curves)
+        for (double v : c)
+            if (std::isfinite(v)) {
+                lo = std::min(lo, v);
+                hi = std::max(hi, v);
             }
     if (!(lo <= hi)) return "set autoscale y\nset format y '% h'\n";
     const double magnitude = std::max(std::abs(lo), std::abs(hi));
@@ -350,6 +362,88 @@ std::string formatPlotCommands(const AnalysisResult& result, const std::string& 
     return script.str();
 }
 
+std::vector<double> plotCurveValues(const AnalysisResult& result, const PlotCurve& curve) {
+    std::vector<double> out;
+    out.reserve(result.rows.size());
+    for (const auto& row : result.rows) {
+        double sum = 0;
+        for (std::size_t col : curve.columns) sum += col < row.size() ? row[col] : std::numeric_limits<double>::quiet_NaN();
+        out.push_back(sum);
+    }
+    return out;
+}
+
+std::string plotCurveUsing(const AnalysisResult& result, const PlotCurve& curve) {
+    if (curve.columns.size() == 1) {
+        const std::size_t col = curve.columns[0];
+        return result.columnUnits[col] == "rad" ? "1:($" + std::to_string(col + 1) + "*180/pi)"
+                                                 : "1:" + std::to_string(col + 1);
+    }
+    std::string sum;
+    for (std::size_t col : curve.columns) sum += (sum.empty() ? "$" : "+$") + std::to_string(col + 1);
+    return "1:(" + sum + ")";
+}
+
+std::string formatFigureCommands(const AnalysisResult& result, const PlotFigure& figure, const std::string& csvPath) {
+    const std::size_t headerLines = csvHeaderLines(result.columnNames, result.columnUnits);
+    const bool ranged = figure.xTo > figure.xFrom;
+    std::ostringstream script;
+    script << std::setprecision(17);
+    script << "set datafile separator ','\nset key outside right\nset grid\n";
+    if (ranged) script << "set xrange [" << figure.xFrom << ":" << figure.xTo << "]\n";
+    // The panels share one x axis: fixed margins (the keys' widths differ).
+    script << "set lmargin at screen 0.08\nset rmargin at screen 0.74\n";
+    // Markers: a dashed line over the whole height of each panel, labelled
+    // on the first (gnuplot keeps arrows and labels across panels); markers
+    // at one instant share a line and a label ("a, b 2 s").
+    std::vector<PlotMarker> merged;
+    for (const auto& m : figure.markers) {
+        if (ranged && (m.x < figure.xFrom || m.x > figure.xTo)) continue;
+        auto same = std::find_if(merged.begin(), merged.end(), [&](const PlotMarker& o) { return o.x == m.x; });
+        if (same == merged.end())
+            merged.push_back(m);
+        else
+            same->label += ", " + m.label;
+    }
+    std::size_t tag = 1;
+    for (const auto& m : merged) {
+        script << "set arrow " << tag << " from first " << m.x << ", graph 0 to first " << m.x
+               << ", graph 1 nohead dt 2 lw 1.2 lc rgb '#cc0000'\n"
+               << "set label " << tag << " " << quoteForGnuplot(m.label + " " + formatNumber(m.x, 4) + " s") << " at first "
+               << m.x << ", graph 0.97 rotate by 90 right offset -0.6,0 font ',8' tc rgb '#cc0000'\n";
+        ++tag;
+    }
+    const std::size_t n = figure.panels.size();
+    script << "set multiplot layout " << n << ",1 title " << quoteForGnuplot(figure.title) << "\n";
+    for (std::size_t p = 0; p < n; ++p) {
+        const PlotPanel& panel = figure.panels[p];
+        if (p == 1) script << "unset label\n";
+        script << "set title " << quoteForGnuplot(panel.title) << "\nset xlabel "
+               << quoteForGnuplot(p + 1 == n ? result.plotXLabel : "") << "\nset ylabel "
+               << quoteForGnuplot(panel.yLabel) << "\n";
+        // The axis from the values drawn (a sum included), inside the range.
+        std::vector<std::vector<double>> drawn;
+        for (const auto& c : panel.curves) {
+            std::vector<double> v = plotCurveValues(result, c), inside;
+            const double scale = c.columns.size() == 1 && result.columnUnits[c.columns[0]] == "rad" ? 180 / 3.14159265358979323846 : 1.0;
+            for (std::size_t i = 0; i < v.size(); ++i)
+                if (!ranged || (!result.rows[i].empty() && result.rows[i][0] >= figure.xFrom && result.rows[i][0] <= figure.xTo))
+                    inside.push_back(scale * v[i]);
+            drawn.push_back(inside);
+        }
+        script << yAxisCommands(drawn) << "plot ";
+        for (std::size_t k = 0; k < panel.curves.size(); ++k) {
+            const PlotCurve& c = panel.curves[k];
+            script << (k ? ", " : "") << quoteForGnuplot(csvPath) << " skip " << headerLines << " using "
+                   << plotCurveUsing(result, c) << " with lines lw " << (c.columns.size() > 1 ? "2.5" : "1.5")
+                   << " title " << quoteForGnuplot(c.title);
+        }
+        script << "\n";
+    }
+    script << "unset multiplot\n";
+    return script.str();
+}
+
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning) {
     std::vector<std::string> written;
@@ -376,7 +470,25 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
         else
             missing.push_back("campbell.png");
     }
+    // A figure named as a plot replaces it, in its place; the others follow.
+    auto findFigure = [&](const std::string& name) -> const PlotFigure* {
+        for (const auto& f : result.figures)
+            if (f.name == name && !f.panels.empty()) return &f;
+        return nullptr;
+    };
+    auto drawFigure = [&](const PlotFigure& f) {
+        const std::string png = dir + "/" + f.name + ".png";
+        const int height = static_cast<int>(260 * f.panels.size()) + 80;
+        if (renderGnuplotPng(png, formatFigureCommands(result, f, csvName), 1100, height))
+            written.push_back(png);
+        else
+            missing.push_back(f.name + ".png");
+    };
     for (const auto& plot : result.plots) {
+        if (const PlotFigure* f = findFigure(plot.first)) {
+            drawFigure(*f);
+            continue;
+        }
         if (plot.second.empty()) continue;
         const std::string png = dir + "/" + plot.first + ".png";
         const std::size_t panels = plotPanels(result, plot.second).size();
@@ -386,6 +498,11 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
             continue;
         }
         written.push_back(png);
+    }
+    for (const auto& f : result.figures) {
+        const bool asPlot = std::any_of(result.plots.begin(), result.plots.end(),
+                                        [&](const auto& plot) { return plot.first == f.name; });
+        if (!asPlot && !f.panels.empty()) drawFigure(f);
     }
     if (!missing.empty()) {
         std::string list;

@@ -62,6 +62,8 @@ std::vector<std::vector<std::size_t>> plotPanels(const AnalysisResult& result, c
 /// narrow for it to tell the ticks apart: a constant level (to 1e-9) on a
 /// ±5 % axis, a narrow band with enough significant digits.
 std::string panelYAxisCommands(const AnalysisResult& result, const std::vector<std::size_t>& columns, double scale);
+/// The same for the values of a panel's curves (already scaled).
+std::string yAxisCommands(const std::vector<std::vector<double>>& curves);
 
 std::vector<std::string> writePlots(const std::string& dir, const std::string& csvPath,
                                     const AnalysisResult& result, std::string& warning);
@@ -73,6 +75,18 @@ std::vector<std::string> writePlots(const std::string& dir, const std::string& c
 /// plot's title; angles (unit rad) are drawn in degrees.
 std::string formatPlotCommands(const AnalysisResult& result, const std::string& title,
                                const std::vector<std::size_t>& columns, const std::string& csvPath);
+
+/// The values a figure's curve draws in each row of the main table: its
+/// column, or the sum of its columns (NaN where a column is missing).
+std::vector<double> plotCurveValues(const AnalysisResult& result, const PlotCurve& curve);
+/// The gnuplot `using` expression of a curve: `1:5`, `1:($5+$7)` for a sum,
+/// an angle (rad) in degrees.
+std::string plotCurveUsing(const AnalysisResult& result, const PlotCurve& curve);
+/// The gnuplot commands of a figure (without terminal and output): one
+/// panel per PlotPanel, stacked; each marker a dashed vertical line at its
+/// x with its label, on every panel; the x range [xFrom, xTo] when set
+/// (markers outside it left out).
+std::string formatFigureCommands(const AnalysisResult& result, const PlotFigure& figure, const std::string& csvPath);
 
 /// One bar chart of a mode shape: its title ("mode 2: 14.3 Hz") and the
 /// amplitude of every body, by name, in the table's column order.

@@ -769,12 +769,31 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
     scene.addEnergyFlow({spec.name + ".field", EnergyFlow::Kind::Source,
                          [impl](const SimTK::State& s) { return -impl->calcFieldPower(s); },
                          "magnetic field energy of " + spec.name + " released (negative: stored)"});
-    scene.addEnergyFlow({spec.name + ".copper_heat", EnergyFlow::Kind::Dissipation,
-                         [impl](const SimTK::State& s) { return impl->calcCopperLoss(s); },
-                         "heat in the stator and rotor windings of " + spec.name +
-                             (st.kind == StarterKind::RotorResistance || st.kind == StarterKind::LiquidResistance
-                                  ? " and in the starter's rotor resistance"
-                                  : "")});
+    // A wound rotor's starter (issue 29 item 6): the rotor circuit's loss
+    // 1.5·r·Rr·|i_r|² splits in the ratio of its resistances, the winding's
+    // Rr : the external (r − 1)·Rr; the starter's share is a flow of its own.
+    if (st.kind == StarterKind::RotorResistance || st.kind == StarterKind::LiquidResistance) {
+        const double Rr = p.rotorResistance;
+        auto external = [impl, Rr](const SimTK::State& s) {
+            return 1.5 * (impl->calcRotorResistanceRatio(s) - 1) * Rr * std::norm(impl->calcRotorCurrent(s, 0));
+        };
+        scene.addEnergyFlow({spec.name + ".copper_heat", EnergyFlow::Kind::Dissipation,
+                             [impl, external](const SimTK::State& s) { return impl->calcCopperLoss(s) - external(s); },
+                             "heat in the stator and rotor windings of " + spec.name +
+                                 " (the starter's external rotor resistance: starter_heat)"});
+        scene.addEnergyFlow({spec.name + ".starter_heat", EnergyFlow::Kind::Dissipation, external,
+                             "heat in the starter's external rotor resistance of " + spec.name +
+                                 ": 1.5·(r − 1)·Rr·|i_r|²"});
+        scene.addProbe({spec.name + ".rotor_winding_loss", "W", ProbeRole::Generic, SimTK::Stage::Dynamics,
+                        [impl, Rr](const SimTK::State& s) { return 1.5 * Rr * std::norm(impl->calcRotorCurrent(s, 0)); },
+                        "heat rate in the rotor winding: 1.5·Rr·|i_r|²"});
+        scene.addProbe({spec.name + ".starter_loss", "W", ProbeRole::Generic, SimTK::Stage::Dynamics, external,
+                        "heat rate in the starter's external rotor resistance: 1.5·(r − 1)·Rr·|i_r|²"});
+    } else {
+        scene.addEnergyFlow({spec.name + ".copper_heat", EnergyFlow::Kind::Dissipation,
+                             [impl](const SimTK::State& s) { return impl->calcCopperLoss(s); },
+                             "heat in the stator and rotor windings of " + spec.name});
+    }
     if (st.kind == StarterKind::FrequencyConverter)
         scene.addDerivedValue({spec.name + ".hold_slip_speed", impl->holdSlipSpeed(), "rad/s",
                                "converter: electrical slip speed its limits hold (rated circuit, f = 1)"});

@@ -672,9 +672,34 @@ void buildInductionMotor(const ElementSpec& spec, Scene& scene) {
         scene.note("output " + spec.name + ".electrical_power",
                    "not available: give rated_efficiency and no_load_loss for the electrical input and stator losses");
     }
-    scene.addEnergyFlow({spec.name + ".rotor_heat", EnergyFlow::Kind::Dissipation,
-                         [impl](const SimTK::State& s) { return impl->calcRotorHeat(s); },
-                         "heat in the rotor circuit of " + spec.name + " (and its starting resistance): M·(f·ωc − ω)"});
+    // A wound rotor's starter (rotor or liquid resistance, issue 29 item 6):
+    // the rotor circuit's heat M·Δω_r = 3·I2²·r·R2 splits in the ratio of
+    // its resistances, R2 : (r − 1)·R2 — the rotor winding's share 1/r, the
+    // external resistance's (r − 1)/r at every instant.
+    const bool woundRotor = st.kind == StarterKind::RotorResistance || st.kind == StarterKind::LiquidResistance;
+    if (woundRotor) {
+        auto winding = [impl](const SimTK::State& s) { return impl->calcRotorHeat(s) / impl->supply(s).resistance; };
+        auto external = [impl](const SimTK::State& s) {
+            return impl->calcRotorHeat(s) * (1 - 1 / impl->supply(s).resistance);
+        };
+        scene.addEnergyFlow({spec.name + ".rotor_heat", EnergyFlow::Kind::Dissipation, winding,
+                             "heat in the rotor winding of " + spec.name +
+                                 " (its own resistance R2: M·(f·ωc − ω)/r; the starter's share is starter_heat)"});
+        scene.addEnergyFlow({spec.name + ".starter_heat", EnergyFlow::Kind::Dissipation, external,
+                             "heat in the starter's external rotor resistance of " + spec.name +
+                                 " ((r − 1)·R2: M·(f·ωc − ω)·(r − 1)/r)"});
+        scene.addProbe({spec.name + ".rotor_winding_loss", "W", ProbeRole::Generic, SimTK::Stage::Dynamics, winding,
+                        "heat rate in the rotor winding (R2), rotor_loss/r"});
+        scene.addProbe({spec.name + ".starter_loss", "W", ProbeRole::Generic, SimTK::Stage::Dynamics, external,
+                        "heat rate in the starter's external rotor resistance, rotor_loss·(r − 1)/r"});
+        scene.addProbe({spec.name + ".rotor_resistance_ratio", "1", ProbeRole::Generic, SimTK::Stage::Dynamics,
+                        [impl](const SimTK::State& s) { return impl->supply(s).resistance; },
+                        "r = (R2 + R_ext)/R2, the starter's rotor resistance over the rotor's own"});
+    } else {
+        scene.addEnergyFlow({spec.name + ".rotor_heat", EnergyFlow::Kind::Dissipation,
+                             [impl](const SimTK::State& s) { return impl->calcRotorHeat(s); },
+                             "heat in the rotor circuit of " + spec.name + ": M·(f·ωc − ω)"});
+    }
 
     const TorqueSpeedCurve& c = impl->curve();
     scene.addDerivedValue({spec.name + ".rated_slip", c.ratedSlip(), "1", "sn = (ωc − ωn)/ωc"});

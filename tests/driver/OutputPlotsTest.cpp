@@ -118,6 +118,51 @@ TEST(SweepPlots, EveryResultIsDrawnForGridsAndSamples) {
     }
 }
 
+// Issue 29 item 3: a sweep wrote 56 PNGs, most of them energy bookkeeping.
+// By default only the headline results are drawn; outputs.sweep_plots names
+// others (a name, NAME* for a family, all).
+TEST(SweepPlots, ByDefaultOnlyTheHeadlineResultsAreDrawn) {
+    const std::string csv =
+        "index[1],x[m],status,energy_balance_residual[J],energy_split.grinding[J],final.belt.torque[N*m],"
+        "kinetic_energy_change[J],mean_power.motor_input[W],mean_power.residual[W],peak_drive_torque[N*m],"
+        "power[W],start_time[s],diagnostic\n"
+        "0,1,ok,1e-9,5,3,2,100,1e-6,40,90,1.5,\n1,2,ok,2e-9,6,4,3,110,2e-6,41,95,1.6,\n";
+    const SweepTable t = parseSweepTable(csv);
+    auto names = [&](const std::vector<std::size_t>& chosen) {
+        std::vector<std::string> out;
+        for (std::size_t r : chosen) out.push_back(t.resultNames[r]);
+        return out;
+    };
+    std::vector<std::string> unmatched;
+    const std::vector<std::string> headline = {"mean_power.motor_input", "peak_drive_torque", "power", "start_time"};
+    EXPECT_EQ(names(selectSweepResults(t, {}, unmatched)), headline);
+    EXPECT_EQ(names(selectSweepResults(t, {"headline"}, unmatched)), headline);
+    EXPECT_EQ(selectSweepResults(t, {"all"}, unmatched).size(), 9u);
+    EXPECT_EQ(names(selectSweepResults(t, {"power", "energy_split.*"}, unmatched)),
+              (std::vector<std::string>{"energy_split.grinding", "power"}));
+    EXPECT_TRUE(unmatched.empty());
+    EXPECT_TRUE(selectSweepResults(t, {"nonesuch"}, unmatched).empty());
+    EXPECT_EQ(unmatched, (std::vector<std::string>{"nonesuch"}));
+
+    if (!gnuplotAvailable()) GTEST_SKIP() << "gnuplot not installed";
+    const std::string dir = freshDir("headline");
+    writeText(dir + "/sweep.csv", csv);
+    std::string warning;
+    auto files = writeSweepPlots(dir, SweepLayout::Grid, warning);
+    EXPECT_EQ(files.size(), 4u) << warning;
+    for (const std::string& n : headline) expectPng(dir + "/sweep_" + n + ".png");
+    EXPECT_FALSE(std::filesystem::exists(dir + "/sweep_energy_balance_residual.png"));
+    std::size_t pngs = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) pngs += e.path().extension() == ".png";
+    EXPECT_EQ(pngs, 4u);
+    // A name that matches nothing is said.
+    warning.clear();
+    files = writeSweepPlots(dir, SweepLayout::Grid, warning, {"power", "nonesuch"});
+    EXPECT_EQ(files.size(), 1u);
+    EXPECT_NE(warning.find("no result named nonesuch"), std::string::npos) << warning;
+    std::filesystem::remove_all(dir);
+}
+
 TEST(SweepPlots, MissingTableIsAWarningNotACrash) {
     const std::string dir = freshDir("missing");
     std::string warning;
