@@ -21,8 +21,9 @@ namespace milldyn {
 // reactions, prescribed trajectories, omit(), LaggedValue current/keep,
 // ElementSchema::outputOnly; 5: Probe::label; 6: Scene::addStartSequence, addSteadyInitializer;
 // 7: Probe::shaft, Scene's element records, drive facet (addDrive), start holds and regularisation
-// speeds; ElementSchema's analysisNeeds, initialStateKeys, regularisationSpeedKey, adjustableResistanceKey.
-constexpr int kPluginAbiVersion = 7;
+// speeds; ElementSchema's analysisNeeds, initialStateKeys, regularisationSpeedKey, adjustableResistanceKey;
+// 8: Schedule's trigger and shared clock (Schedule.h), AnalysisResult::figures.
+constexpr int kPluginAbiVersion = 8;
 
 /// Builds one element into a scene. Throws SpecError for input the schema
 /// could not catch, std::invalid_argument from element constructors.
