@@ -116,7 +116,7 @@ TEST(CliCommands, CompletionScriptNamesCommandsTypesAndIntegrators) {
     const Ran r = cli({"completion"});
     ASSERT_EQ(r.code, 0);
     EXPECT_TRUE(contains(r.out, "complete -F _milldyn milldyn"));
-    EXPECT_TRUE(contains(r.out, "run info validate sweep merge elements analyses schema completion help"));
+    EXPECT_TRUE(contains(r.out, "run info validate sweep merge front elements analyses schema completion help"));
     EXPECT_TRUE(contains(r.out, "InductionMotor"));
     EXPECT_TRUE(contains(r.out, "RungeKuttaMerson"));
 }
