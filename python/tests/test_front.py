@@ -13,20 +13,8 @@ import os
 
 import milldyn
 
-STIFF = """format_version: 1
-name: stiff shaft start
-bodies:
-  - {name: rotor, inertia: 0.12 kg*m^2, joint: {type: pin, parent: ground}}
-  - {name: drum, inertia: 0.3 kg*m^2, joint: {type: pin, parent: ground}}
-elements:
-  - {type: InductionMotor, name: motor, body: rotor, law: kloss, rated_torque: 97.4 N*m, rated_speed: 1470 rpm,
-     synchronous_speed: 1500 rpm, breakdown_ratio: 2.5}
-  - {type: TorsionalCoupling, name: shaft, bodies: [rotor, drum], stiffness: 2e5 N*m/rad, damping: 5 N*m*s/rad}
-  - {type: ResistanceTorque, name: load, body: drum, constant_torque: 20 N*m, smoothing_speed: 0.01 rad/s}
-scenario: {analysis: transient, initial_state: rest, end_time: 3 s, speed_body: drum}
-integrator: {name: RungeKuttaMerson, accuracy: 1e-3}
-outputs: {sample_interval: 5 ms, plots: false}
-"""
+SRC = os.environ.get("MILLDYN_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+STIFF = open(os.path.join(SRC, "tests", "testdata", "front", "stiff_shaft_start.yaml")).read()
 
 
 def test_front_writes_presets_that_a_run_uses_and_the_resolution_check_warns(tmp_path):

@@ -23,25 +23,18 @@
 namespace milldyn {
 namespace {
 
-const char* kModel = R"(format_version: 1
-name: stiff shaft start
-bodies:
-  - {name: rotor, inertia: 0.12 kg*m^2, joint: {type: pin, parent: ground}}
-  - {name: drum, inertia: 0.3 kg*m^2, joint: {type: pin, parent: ground}}
-elements:
-  - {type: InductionMotor, name: motor, body: rotor, law: kloss, rated_torque: 97.4 N*m, rated_speed: 1470 rpm,
-     synchronous_speed: 1500 rpm, breakdown_ratio: 2.5}
-  - {type: TorsionalCoupling, name: shaft, bodies: [rotor, drum], stiffness: 2e5 N*m/rad, damping: 5 N*m*s/rad}
-  - {type: ResistanceTorque, name: load, body: drum, constant_torque: 20 N*m, smoothing_speed: 0.01 rad/s}
-scenario: {analysis: transient, initial_state: rest, end_time: 3 s, speed_body: drum}
-integrator: {name: RungeKuttaMerson, accuracy: 1e-3}
-outputs: {sample_interval: 5 ms, plots: false}
-)";
+/// tests/testdata/front/stiff_shaft_start.yaml (shared with python/tests/test_front.py).
+std::string modelText() {
+    std::ifstream in(std::string(MILLDYN_SOURCE_DIR) + "/tests/testdata/front/stiff_shaft_start.yaml");
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
 
 class Front : public test::BinaryRunFixture {
 protected:
     Front() : BinaryRunFixture("front") {}
-    std::string writeModel(const std::string& text = kModel) const {
+    std::string writeModel(const std::string& text = modelText()) const {
         const std::string path = (m_dir / "stiff.yaml").string();
         std::ofstream(path) << text;
         return path;
@@ -183,7 +176,7 @@ TEST_F(Front, PresetsBesideTheModelAreLocatedInTheirFileAndTheModelsOwnWin) {
     }
     std::ofstream(presetsFileBeside(model)) << "presets:\n  fast:\n    why: loose\n    set: {integrator.accuracy: 1e-4}\n";
     EXPECT_EQ(readModelFile(model, defaultModelReader(), {{"preset", "fast"}}).integrator.accuracy, 1e-4);
-    std::string own = kModel;
+    std::string own = modelText();
     own += "presets:\n  fast: {why: own, set: {integrator.accuracy: 1e-5}}\n";
     std::ofstream(model) << own;
     EXPECT_EQ(readModelFile(model, defaultModelReader(), {{"preset", "fast"}}).integrator.accuracy, 1e-5);
