@@ -171,7 +171,11 @@ FrontResult measureFront(const std::string& model, const std::vector<Override>& 
     double steadyEnd = 0;
     {
         const ModelSpec spec = readModel(model, overrides);
-        for (const auto& d : buildScene(spec)->drives())
+        // The scene is held here: a range-for over buildScene(spec)->drives()
+        // would read the drives of a scene already destroyed (the temporary
+        // lives only to the end of the range's initialiser before C++23).
+        const auto scene = buildScene(spec);
+        for (const auto& d : scene->drives())
             if (std::isfinite(d.switchOffTime) && d.switchOffTime > 0)
                 steadyEnd = steadyEnd > 0 ? std::min(steadyEnd, d.switchOffTime) : d.switchOffTime;
     }
