@@ -4,6 +4,10 @@
 #include "driver/Units.h"
 #include "driver/analyses/AnalysisRegistry.h"
 #include "driver/outputs/AtomicFile.h"
+#include "plugins/scene/ElementRegistry.h"
+#include "plugins/scene/Schedule.h"
+#include "validation/report/ReportSection.h"
+#include "validation/report/ReportWriter.h"
 
 #include <chrono>
 #include <cmath>
@@ -161,6 +165,28 @@ ModelSpec checkSweepPlan(const SweepPlan& plan, const std::string& model, const 
         }
     }
     return spec;
+}
+
+std::vector<const ElementSchema*> elementSchemas() {
+    const auto& registry = ElementRegistry::instance();
+    std::vector<const ElementSchema*> out;
+    for (const auto& name : registry.typeNames()) out.push_back(&registry.find(name)->schema);
+    return out;
+}
+
+std::vector<const ElementSchema*> analysisSchemas() {
+    std::vector<const ElementSchema*> out;
+    for (const auto& kind : analysisKinds()) out.push_back(findAnalysisSchema(kind));
+    return out;
+}
+
+bool isScheduleKey(const ParamSchema& p) { return isScheduleParam(p); }
+
+std::vector<ValidationRow> validate(const std::string& filter) { return runValidationCases(filter); }
+
+std::vector<std::string> writeValidationReportFiles(const std::string& dir, const std::vector<ValidationRow>& rows,
+                                                    std::string& warning) {
+    return writeValidationReport(dir, rows, reportSections(), warning);
 }
 
 }  // namespace milldyn

@@ -1,15 +1,19 @@
 #pragma once
 // Api: what the command line (driver/Cli.cpp) and the Python module
 // (python/bindings.cpp) both do with a model — read it, describe it, run it,
-// write its files, plan a sweep — in one place, so neither has a second
-// implementation. Plain C++ (no printing, no Python): the callers present
-// the results.
+// write its files, plan a sweep — and what they list (element types,
+// analyses) and validate, in one place, so neither has a second
+// implementation nor reaches into the registry or the validation cases.
+// Plain C++ (no printing, no Python): the callers present the results.
+// Built as the library milldyn_api over milldyn_driver_lib and
+// milldyn_validation_cases (CMakeLists.txt).
 
 #include "driver/ModelFile.h"
 #include "driver/ModelSpec.h"
 #include "driver/Sweep.h"
 #include "driver/analyses/Analysis.h"
 #include "driver/outputs/Writers.h"
+#include "validation/cases/ValidationCases.h"
 
 #include <atomic>
 #include <cstddef>
@@ -123,5 +127,23 @@ SweepPlan makeSweepPlan(const std::vector<std::string>& grids, const std::vector
 /// --range option, "did you mean 1490 rpm ...?"), as --set refuses it,
 /// instead of failing at every point. Returns the base model.
 ModelSpec checkSweepPlan(const SweepPlan& plan, const std::string& model, const std::vector<Override>& base);
+
+/// Every element type's schema, built-in and loaded plugins', in the order
+/// `milldyn elements` lists them (the registry's).
+std::vector<const ElementSchema*> elementSchemas();
+/// Every analysis's schema (`scenario.analysis`), in the order `milldyn
+/// analyses` lists them.
+std::vector<const ElementSchema*> analysisSchemas();
+/// True for a key whose value is a schedule ({ramp|step_recovery|sine|table}).
+bool isScheduleKey(const ParamSchema& p);
+
+/// The validation cases whose name contains `filter` ("" for all), plugins'
+/// case groups included: the rows `milldyn validate` prints.
+std::vector<ValidationRow> validate(const std::string& filter);
+/// Writes `milldyn validate --report`'s report.html and report.md of `rows`
+/// into `dir`, with every machine's report section. Returns the paths;
+/// `warning` says what could not be drawn. Throws OutputError.
+std::vector<std::string> writeValidationReportFiles(const std::string& dir, const std::vector<ValidationRow>& rows,
+                                                    std::string& warning);
 
 }  // namespace milldyn

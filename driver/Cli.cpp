@@ -16,10 +16,7 @@
 #include "driver/outputs/OutputSet.h"
 #include "driver/outputs/Schematic.h"
 #include "driver/outputs/Writers.h"
-#include "plugins/scene/ElementRegistry.h"
 #include "plugins/scene/EngineTag.h"
-#include "validation/cases/ValidationCases.h"
-#include "validation/report/ReportWriter.h"
 
 #include <CLI/CLI.hpp>
 
@@ -675,7 +672,7 @@ int commandMerge(const Arguments& a, std::ostream& out, std::ostream& err) {
 }
 
 int commandValidate(const Arguments& a, std::ostream& out, std::ostream& err) {
-    const auto rows = runValidationCases(a.filter);
+    const auto rows = validate(a.filter);
     if (a.json) {
         out << formatValidationJson(rows);
     } else {
@@ -683,7 +680,7 @@ int commandValidate(const Arguments& a, std::ostream& out, std::ostream& err) {
     }
     if (!a.reportDir.empty()) {
         std::string warning;
-        const auto files = writeValidationReport(a.reportDir, rows, reportSections(), warning);
+        const auto files = writeValidationReportFiles(a.reportDir, rows, warning);
         if (!warning.empty()) err << "milldyn: warning: " << warning << "\n";
         (a.json ? err : out) << "wrote " << files.size() << " report files: " << a.reportDir << "/report.html, "
             << a.reportDir << "/report.md\n";

@@ -12,10 +12,7 @@
 #include "driver/Simulation.h"
 #include "driver/Sweep.h"
 #include "driver/Units.h"
-#include "plugins/scene/Schedule.h"
 #include "driver/outputs/AtomicFile.h"
-#include "plugins/scene/ElementRegistry.h"
-#include "validation/cases/ValidationCases.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -124,7 +121,7 @@ py::dict schemaDict(const ElementSchema& s) {
     py::dict keys;
     for (const auto& p : s.params) {
         py::dict k;
-        k["kind"] = isScheduleParam(p) ? "schedule" : kindName(p.kind);
+        k["kind"] = isScheduleKey(p) ? "schedule" : kindName(p.kind);
         const bool numeric = p.kind == ParamKind::Quantity || p.kind == ParamKind::QuantityList;
         k["unit"] = numeric ? py::object(py::str(p.unit)) : py::object(py::none());
         k["required"] = p.required;
@@ -474,7 +471,7 @@ PYBIND11_MODULE(_milldyn, m) {
         std::vector<ValidationRow> rows;
         {
             py::gil_scoped_release release;
-            rows = runValidationCases(filter);
+            rows = validate(filter);
         }
         py::list out;
         for (const auto& r : rows) {
@@ -500,13 +497,12 @@ PYBIND11_MODULE(_milldyn, m) {
 
     m.def("elements", [] {
         py::list out;
-        const auto& registry = ElementRegistry::instance();
-        for (const auto& name : registry.typeNames()) out.append(schemaDict(registry.find(name)->schema));
+        for (const ElementSchema* s : elementSchemas()) out.append(schemaDict(*s));
         return out;
     });
     m.def("analyses", [] {
         py::list out;
-        for (const auto& kind : analysisKinds()) out.append(schemaDict(*findAnalysisSchema(kind)));
+        for (const ElementSchema* s : analysisSchemas()) out.append(schemaDict(*s));
         return out;
     });
     // The reader's "did you mean" (ElementSchema.h): the candidate closest to
