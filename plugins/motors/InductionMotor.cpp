@@ -460,7 +460,7 @@ void crossCheckInductionMotor(const ElementSpec& e) {
             throw e.error("curve_speeds", "speeds must not exceed the synchronous speed (" + num(wc) + " rad/s)");
         // A motor drives below synchronous speed and has no torque at it
         // (no slip, no rotor current): the rotor heat M·(ωc − ω) is never
-        // negative, and above ωc the curve generates (docs/model-format.md).
+        // negative, and above ωc the curve generates (docs/elements/InductionMotor.md).
         const std::vector<double>& torques = e.numbers("curve_torques");
         for (std::size_t k = 0; k < torques.size(); ++k)
             if (torques[k] < 0)

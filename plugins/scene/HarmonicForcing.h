@@ -36,7 +36,7 @@ struct ForcingPhasor {
  * τ = t). The analyses linearize about steady running with the excitations
  * off and apply these harmonics as forcing along it (the angle's
  * dependence on the vibration itself, a parametric term, is neglected:
- * docs/model-format.md). A load implements it beside
+ * docs/elements/AngleLoad.md). A load implements it beside
  * SimTK::Force::Custom::Implementation; the analyses find it with
  * Scene::findElement<HarmonicForcing>.
  */
