@@ -198,8 +198,11 @@ void buildJournalFriction(const ElementSpec& spec, Scene& scene) {
     auto* impl = new JournalFriction(scene.matter(), scene.mobilizerReactions(), body->mobod, p);
     Force::Custom force(scene.forces(), impl);
     scene.addForce(spec.name, spec.type, force.getForceIndex(), impl);
+    // The torque the journal takes from its shaft, + about +z (the shaft gets
+    // −calcTorque): signed like every load's, so the summary's
+    // resistance_torque sums it rightly on a shaft turning −z.
     scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, Stage::Velocity,
-                    [impl](const State& s) { return std::abs(impl->calcTorque(s)); }});
+                    [impl](const State& s) { return impl->calcTorque(s); }});
     scene.addProbe({spec.name + ".load", "N", ProbeRole::Generic, Stage::Velocity,
                     [impl](const State& s) { return impl->getLoad(s); }});
     scene.addProbe({spec.name + ".reaction", "N", ProbeRole::Generic, Stage::Acceleration,

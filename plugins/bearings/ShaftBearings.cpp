@@ -108,8 +108,10 @@ void buildShaftBearings(const ElementSpec& spec, Scene& scene) {
                     ProbeRole::Generic, Stage::Acceleration, [impl](const State& s) { return impl->calcAxialLoad(s); },
                     "the locating bearing's thrust on the shaft along its +z (the other bearing floats)"});
     if (p.friction.frictionCoefficient > 0 && p.friction.journalDiameter > 0) {
+        // Signed like every load's (+ about +z, what the bearings take from
+        // the shaft); the per-bearing friction_torque above is a magnitude.
         scene.addProbe({spec.name + ".torque", "N*m", ProbeRole::ResistanceTorque, Stage::Velocity,
-                        [impl](const State& s) { return std::abs(impl->calcTorque(s)); }});
+                        [impl](const State& s) { return impl->calcTorque(s); }});
         scene.addEnergyFlow({spec.name, EnergyFlow::Kind::Dissipation,
                              [impl](const State& s) { return impl->calcPower(s); }});
         addKeptLoad(scene, spec.name, impl);

@@ -58,8 +58,12 @@ const DiscDrag* addDiscDrag(Scene& scene, const std::string& name, const SimTK::
     auto* impl = new DiscDrag(body, p);
     SimTK::Force::Custom force(scene.forces(), impl);
     scene.addForce(name, "DiscDrag", force.getForceIndex(), impl);
+    // calcTorque is the drag's magnitude; the output is signed like every
+    // load's (+ about +z: what the discs take from their shaft, so negative
+    // on a shaft turning −z), its power T·|ω| >= 0 either way.
     addLoadTorqueOutputs(
-        scene, name, [impl](const SimTK::State& s) { return impl->calcTorque(s); },
+        scene, name,
+        [impl](const SimTK::State& s) { return (impl->calcSpeed(s) < 0 ? -1.0 : 1.0) * impl->calcTorque(s); },
         [impl](const SimTK::State& s) { return impl->calcPower(s); });
     scene.addProbe({name + ".reynolds", "1", ProbeRole::Generic, SimTK::Stage::Velocity,
                     [impl](const SimTK::State& s) { return impl->calcReynolds(s); }});

@@ -61,6 +61,44 @@ TEST(SummaryTorques, LoadsOnOneShaftAreSummedUnderOneName) {
     EXPECT_EQ(r.find("resistance_torque.load_a.torque"), nullptr);
 }
 
+// A shaft turning −z (behind a reversing gear stage) with a constant load, a
+// journal and disc drag: every load's NAME.torque is what it takes from the
+// shaft, + about +z, so all three are negative and resistance_torque is
+// their sum (a journal or drag reported as a magnitude was subtracted:
+// the dual-pinion mill's −790 kN·m against −806 kN·m). Closed forms at the
+// last sample, with the speed ω < 0 read from the run:
+//   constant:  M0·tanh(ω/ωs)                      (ResistanceTorque)
+//   journal:   m·g·f·d/2·tanh(ω/ωs)               (JournalFriction, mass on a pin)
+//   drag:      negative, its power T·ω = |T·ω|       (DiscDrag; its law is DiscDragTest's)
+TEST(SummaryTorques, LossesOnAShaftTurningBackwardsAreSignedAndSummed) {
+    const std::string model =
+        "format_version: 1\nname: backwards\ngravity: [0, -10 m/s^2, 0]\n"
+        "bodies:\n  - {name: drum, mass: 200 kg, inertia: 5 kg*m^2, joint: {type: pin}, initial_speed: -20 rad/s}\n"
+        "elements:\n"
+        "  - {type: AppliedTorque, name: drive, body: drum, torque: -40 N*m}\n"
+        "  - {type: ResistanceTorque, name: load, body: drum, constant_torque: 12 N*m}\n"
+        "  - {type: JournalFriction, name: journal, body: drum, friction_coefficient: 0.05, journal_diameter: 100 mm}\n"
+        "  - {type: DiscDrag, name: drag, body: drum, disc_diameter: 0.6 m, discs: 2, "
+        "medium_density: 1000 kg/m^3, medium_viscosity: 1e-5 m^2/s}\n"
+        "scenario: {analysis: transient, initial_state: file, end_time: 0.5 s, speed_body: drum}\n"
+        "integrator: {name: RungeKuttaMerson, accuracy: 1e-9}\noutputs: {sample_interval: 0.1 s}\n";
+    const AnalysisResult r = runAnalysis(readModelText(model, "backwards.yaml", defaultModelReader()));
+    const auto last = [&](const std::string& column) {
+        const std::size_t c = r.findColumn(column);
+        EXPECT_NE(c, std::string::npos) << column;
+        return c == std::string::npos ? NAN : r.rows.back()[c];
+    };
+    const double w = last("drum.speed");
+    ASSERT_LT(w, -1.0) << "the drum should still turn −z";
+    const double load = last("load.torque"), journal = last("journal.torque"), drag = last("drag.torque");
+    EXPECT_NEAR(load, 12 * std::tanh(w / 0.01), 1e-9);
+    EXPECT_NEAR(journal, 200 * 10 * 0.05 * 0.05 * std::tanh(w / 0.01), 1e-9);
+    EXPECT_LT(drag, 0);
+    // The drag's power is what it absorbs: T·ω > 0 with both negative.
+    EXPECT_NEAR(last("drag.power"), drag * w, 1e-9 * std::abs(drag * w));
+    ASSERT_NE(r.find("resistance_torque"), nullptr);
+    EXPECT_NEAR(r.find("resistance_torque")->value, load + journal + drag, 1e-9 * std::abs(load + journal + drag));
+}
 
 // Signed peaks and the reversal (run_max., run_min.): two inertias J1 = 1,
 // J2 = 3 kg*m^2 joined by a shaft k = 1e4 N*m/rad, c = 10 N*m*s/rad, a step
