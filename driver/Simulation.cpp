@@ -927,7 +927,16 @@ SimTK::State Simulation::locateCrossing(const SimTK::State& before, double tAfte
         integ->setInternalStepLimit(kInternalStepLimit);
         if (m_settings.maxStep > 0) integ->setMaximumStepSize(m_settings.maxStep);
         integ->initialize(before);
-        if (t > before.getTime()) integ->stepTo(t, t);
+        // stepTo returns early at a located event (an element's witness,
+        // Integrator::ReachedEventTrigger): step on to t, or the state at
+        // the event would stand for the state at t. The bracket [before,
+        // tAfter] holds no kept-value change (the run remembers the watch
+        // start at every step end, after the change), so nothing else of the
+        // run's step-end handling applies here.
+        for (int pieces = 0; integ->getTime() < t && pieces < 100; ++pieces)
+            if (integ->stepTo(t, t) == SimTK::Integrator::EndOfSimulation) break;
+        if (integ->getTime() < t)
+            throw AnalysisError(watch.what + ": could not integrate to " + timeText(t) + " to locate the crossing");
         m_extra.realizations += integ->getNumRealizations();
         SimTK::State s = integ->getState();
         system.realize(s, SimTK::Stage::Acceleration);
