@@ -485,6 +485,433 @@ void checkSteadyStart(const Scene& scene, const ModelSpec& spec, const SimTK::St
                         ": the solved steady running does not hold there");
 }
 
+namespace {
+
+/// A condition of each instant (a held charge's wall torque) is solved only
+/// by a replay, at every sample; a history along the run (a frozen charge's
+/// release latch) only by an integration (ElementSchema::analysisNeeds).
+void checkAnalysisNeeds(const ModelSpec& spec, const Simulation& sim) {
+    const ElementSpec& sc = spec.scenario;
+    for (const auto& e : spec.elements) {
+        const ElementSchema* s = schemaOf(e);
+        for (const auto& need : s ? s->analysisNeeds : std::vector<ElementSchema::AnalysisNeed>{}) {
+            if (!need.matches(e)) continue;
+            if (need.kind == ElementSchema::AnalysisNeed::Kind::EachInstant && !sim.isReplay())
+                throw e.error(need.key, need.value + ": " + need.why +
+                                            ": a transient with one must have no free degree of freedom and be "
+                                            "replayed (" +
+                                            (sc.text("zero_dof") == "integrate" ? std::string("zero_dof is integrate")
+                                                                                : sim.replayReason()) +
+                                            "); use " + need.alternative);
+            if (need.kind == ElementSchema::AnalysisNeed::Kind::StepHistory && sim.isReplay())
+                throw e.error(need.key, need.value + ": " + need.why + ", and this run would be replayed (" +
+                                            sim.replayReason() + "): set scenario.zero_dof: integrate");
+        }
+    }
+}
+
+/// The analysis window's length: scenario.hold_time (default a tenth of the
+/// run before `tWindowEnd`). Under a periodic load the hold is judged on
+/// period means (checkHold), which needs kHoldPeriods whole periods in the
+/// window: a shorter hold window is lengthened to them when the run before
+/// switch-off holds them (a period of revolutions is estimated from the
+/// shaft's hinted running speed, with a quarter of margin for a slower
+/// shaft), said in a note.
+double analysisWindowLength(const Scene& scene, const ModelSpec& spec, const WindowStatistics::PeriodRule& rule,
+                            const std::string& periodWhy, double tStart, double tWindowEnd, AnalysisResult& result) {
+    const ElementSpec& sc = spec.scenario;
+    double hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (tWindowEnd - tStart);
+    double period = 0;
+    if (rule.kind == WindowStatistics::PeriodRule::Kind::Time) period = rule.period;
+    if (rule.kind == WindowStatistics::PeriodRule::Kind::Angle) {
+        const auto hints = scene.speedHints();
+        const auto hint = hints.find(rule.body);
+        if (hint != hints.end() && std::isfinite(hint->second) && hint->second != 0)
+            period = 1.25 * 2 * SimTK::Pi / std::abs(hint->second);
+    }
+    const double need = kHoldPeriods * period;
+    if (period > 0 && need > hold && need <= tWindowEnd - tStart) {
+        result.notes.push_back("analysis window lengthened from " + fmt(hold) + " s (scenario.hold_time" +
+                               (sc.number("hold_time") > 0 ? std::string() : ", a tenth of the run") + ") to " +
+                               fmt(need) + " s, to hold " + std::to_string(kHoldPeriods) + " whole " + rule.what +
+                               " (" + periodWhy +
+                               "): the hold verdict and the steady values are judged over whole load periods");
+        hold = need;
+    }
+    return hold;
+}
+
+/// Index of each steady quantity in TrajectoryRecord's statistics.
+enum SteadyQuantity : std::size_t { kSteadySpeed = 0, kSteadyLoadTorque, kSteadyLoadPower, kSteadyDriveTorque, kSteadyQuantities };
+
+/**
+ * What a transient follows along the integrated trajectory, at every step
+ * end (Simulation::run's onStep), never from the output rows: the design
+ * loads (the drive torque's sum or each drive, every coupling and every
+ * outputs.peaks probe or body speed, maxima located inside the steps),
+ * speed_body's speed (verdicts, start_time), the steady-operation
+ * statistics over whole periods of the analysis window (issue 29 item 1),
+ * a charge's largest fraction of its critical speed, when each starting
+ * sequence first stood finished, and the state at the window's start.
+ */
+struct TrajectoryRecord {
+    TrajectoryRecord(const ModelSpec& spec, const Scene& scene, const SceneBody& speedBody, double tWindowStart,
+                     double tWindowEnd, double switchTime, const WindowStatistics::PeriodRule& rule)
+        : m_scene(scene),
+          m_speedBody(speedBody),
+          m_tWindowStart(tWindowStart),
+          m_switchTime(switchTime),
+          driveProbes(probesOfRole(scene, ProbeRole::DriveTorque)),
+          drivesOnOneShaft(distinctShafts(spec, scene, ProbeRole::DriveTorque) <= 1),
+          peakDrive([&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::DriveTorque); }),
+          peaks(scene.probes().size()),
+          windowStatistics(statisticsOf(spec, scene, speedBody), tWindowStart, tWindowEnd, rule),
+          sequenceEnd(scene.startSequences().size()) {
+        const auto& probes = scene.probes();
+        // Torques on different shafts never add (issue 32): one drive peak
+        // per drive when the drives are on several shafts.
+        if (!drivesOnOneShaft)
+            for (std::size_t i : driveProbes)
+                drivePeaks.emplace_back([&probes, i](const SimTK::State& s) { return probes[i].value(s); });
+        // Every coupling and outputs.peaks probe: its largest and smallest
+        // value over the run (run_max., run_min.), the signed peak the larger in size.
+        for (std::size_t i = 0; i < probes.size(); ++i)
+            if (probes[i].role == ProbeRole::CouplingTorque ||
+                std::find(spec.outputs.peaks.begin(), spec.outputs.peaks.end(), probes[i].name) !=
+                    spec.outputs.peaks.end())
+                peaks[i].emplace([&probes, i](const SimTK::State& s) { return probes[i].value(s); });
+        // The statistics' order, as statisticsOf made it: the steady
+        // quantities, the outputs.statistics names, then each load and drive
+        // torque alone (torques on different shafts are reported one by one).
+        for (const std::string& name : spec.outputs.statistics)
+            if (const auto q = findQuantity(scene, name)) statisticsNamed.push_back(*q);
+        std::size_t next = kSteadyQuantities + statisticsNamed.size();
+        for (ProbeRole role : {ProbeRole::ResistanceTorque, ProbeRole::DriveTorque})
+            for (std::size_t i : probesOfRole(scene, role)) probeStatistic[i] = next++;
+        for (const std::string& name : spec.outputs.peaks)
+            if (const auto q = findQuantity(scene, name); q && !q->body.empty())
+                speedPeaks.emplace_back(*q, SignedPeaks(q->f));
+        // A charge's fraction of its critical speed (SegmentCharge's
+        // NAME.fraction_of_critical), its largest over the trajectory for the
+        // near-centrifuging warning. Named by type: a capability would need a
+        // field in ElementSchema.h, which this change leaves alone.
+        for (const auto& e : spec.elements) {
+            if (e.type != "SegmentCharge") continue;
+            for (std::size_t i = 0; i < probes.size(); ++i)
+                if (probes[i].name == e.name + ".fraction_of_critical")
+                    criticalFractions.emplace_back(
+                        e.name, PeakTracker([&probes, i](const SimTK::State& s) { return probes[i].value(s); }));
+        }
+    }
+
+    /// A step end, realized to Acceleration.
+    void step(Simulation& sim, const SimTK::State& s) {
+        const double t = s.getTime();
+        trace.add(t, pinSpeed(s, m_speedBody.mobod), m_speedBody.mobod.getOneUDot(s, SimTK::MobilizerUIndex(0)));
+        peakDrive.step(sim, s);
+        for (auto& p : drivePeaks) p.step(sim, s);
+        for (auto& p : peaks)
+            if (p) p->step(sim, s);
+        windowStatistics.step(sim, s);
+        for (auto& p : speedPeaks) p.second.step(sim, s);
+        for (auto& p : criticalFractions) p.second.step(sim, s);
+        // A sequence's end located inside the step (bisection on the
+        // trajectory: a ramp ends at its time, not at the next step end).
+        const auto& sequences = m_scene.startSequences();
+        for (std::size_t i = 0; i < sequences.size(); ++i)
+            if (!sequenceEnd[i] && sequences[i].state(s).finished) {
+                double a = sim.trajectoryFrom(), b = t;
+                if (a < b && !sequences[i].state(sim.trajectoryAt(a)).finished)
+                    for (int k = 0; k < 60 && b - a > 1e-12 * std::max(1.0, b); ++k) {
+                        const double c = 0.5 * (a + b);
+                        (sequences[i].state(sim.trajectoryAt(c)).finished ? b : a) = c;
+                    }
+                sequenceEnd[i] = b;
+            }
+        // The power split's window starts exactly at tWindowStart (a state
+        // on the trajectory, not the first sample after it).
+        if (!windowStart && t >= m_tWindowStart && m_tWindowStart <= m_switchTime)
+            windowStart = sim.trajectoryAt(std::max(m_tWindowStart, sim.trajectoryFrom()));
+    }
+
+    /// The steady quantities (kSteady*), every outputs.statistics name, then
+    /// each load and drive torque alone.
+    static std::vector<WindowStatistics::Fn> statisticsOf(const ModelSpec& spec, const Scene& scene,
+                                                          const SceneBody& speedBody) {
+        std::vector<WindowStatistics::Fn> f = {
+            [&speedBody](const SimTK::State& s) { return pinSpeed(s, speedBody.mobod); },
+            [&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::ResistanceTorque); },
+            [&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::ResistancePower); },
+            [&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::DriveTorque); }};
+        for (const std::string& name : spec.outputs.statistics)
+            if (const auto q = findQuantity(scene, name)) f.push_back(q->f);
+        for (ProbeRole role : {ProbeRole::ResistanceTorque, ProbeRole::DriveTorque})
+            for (std::size_t i : probesOfRole(scene, role))
+                f.push_back([&probes = scene.probes(), i](const SimTK::State& s) { return probes[i].value(s); });
+        return f;
+    }
+
+private:
+    const Scene& m_scene;
+    const SceneBody& m_speedBody;
+    double m_tWindowStart, m_switchTime;
+
+public:
+    const std::vector<std::size_t> driveProbes;
+    const bool drivesOnOneShaft;
+    PeakTracker peakDrive;
+    std::vector<PeakTracker> drivePeaks;
+    std::vector<std::optional<SignedPeaks>> peaks;  ///< per probe: couplings and outputs.peaks
+    SpeedTrace trace;                               ///< speed_body's speed at every step end
+    WindowStatistics windowStatistics;
+    std::vector<NamedQuantity> statisticsNamed;          ///< outputs.statistics
+    std::map<std::size_t, std::size_t> probeStatistic;  ///< probe index -> statistics index
+    std::vector<std::pair<NamedQuantity, SignedPeaks>> speedPeaks;
+    std::vector<std::pair<std::string, PeakTracker>> criticalFractions;
+    std::vector<std::optional<double>> sequenceEnd;  ///< when each starting sequence first stood finished
+    std::optional<SimTK::State> windowStart;         ///< the state at the analysis window's start
+};
+
+/// The steady (or, for a start that did not complete, end-of-start) values
+/// of the summary: speed_body's speed, the load and drive torques on their
+/// shafts, the loads' power, the mean power split — under a periodic load
+/// means over whole periods of the analysis window, the last instant's
+/// torques beside them as final.*.
+struct SteadyReport {
+    const Scene& scene;
+    const ModelSpec& spec;
+    const SceneBody& speedBody;
+    const TrajectoryRecord& record;
+    const SimTK::State& steady;
+    bool reached;         ///< a steady state to report (else the names end in _at_end)
+    bool switched;        ///< a drive was switched off before the end
+    std::string at;       ///< "just before switch-off" / "at the end of the run"
+    std::string periodWhat, periodWhy;
+
+    bool periodMeans() const {
+        return reached && record.windowStatistics.valid() && record.windowStatistics.periods() > 0;
+    }
+    std::string windowText() const {
+        const WindowStatistics& w = record.windowStatistics;
+        return !w.valid() ? std::string()
+                          : std::to_string(w.periods()) + " whole " + periodWhat + ", " + fmt(w.windowStart()) +
+                                " to " + fmt(w.windowEnd()) + " s (" + periodWhy + ")";
+    }
+    double steadyValue(std::size_t i, double instant) const {
+        return periodMeans() ? record.windowStatistics.values(i).mean : instant;
+    }
+
+    /// Adds the values; returns the steady speed.
+    double add(AnalysisResult& result) const {
+        const std::string suffix = reached ? "" : "_at_end";
+        const std::string steadyAt = periodMeans() ? "averaged over " + windowText() : at;
+        auto steadyProbe = [&](std::size_t probe) {
+            return steadyValue(record.probeStatistic.at(probe), scene.probes()[probe].value(steady));
+        };
+        auto instantProbe = [&](std::size_t probe) { return scene.probes()[probe].value(steady); };
+        const double omegaSteady = steadyValue(kSteadySpeed, pinSpeed(steady, speedBody.mobod));
+        result.results.push_back({reached ? "steady_speed" : "speed_at_end", omegaSteady, "rad/s",
+                                  "speed of " + speedBody.name + " " + steadyAt});
+        // A torque is reported on its shaft: loads (drives) on one shaft are
+        // summed, loads on several shafts are each reported alone, never
+        // added (a torque on the table and one on the motor shaft have no sum).
+        addTorqueLines(
+            scene, spec, ProbeRole::ResistanceTorque, "resistance_torque", suffix, "load torque", steadyAt,
+            [&] { return steadyValue(kSteadyLoadTorque, sumProbes(scene, steady, ProbeRole::ResistanceTorque)); },
+            steadyProbe, result);
+        result.results.push_back(
+            {"power" + suffix, steadyValue(kSteadyLoadPower, sumProbes(scene, steady, ProbeRole::ResistancePower)),
+             "W",
+             "power absorbed by the loads " + steadyAt + ", measured at each load's own shaft and summed (" +
+                 probeNames(scene, ProbeRole::ResistancePower) +
+                 "); friction, damping and brake heat are not in it (mean_power.*)"});
+        if (periodMeans())
+            addMeanPower(scene, record.windowStatistics.startState(), record.windowStatistics.endState(), windowText(),
+                         result);
+        else if (record.windowStart)
+            addMeanPower(scene, *record.windowStart, steady,
+                         "the last " + fmt(steady.getTime() - record.windowStart->getTime()) + " s " +
+                             (switched ? "before switch-off" : "of the run") + " (" +
+                             fmt(record.windowStart->getTime()) + " to " + fmt(steady.getTime()) + " s)",
+                         result);
+        addTorqueLines(
+            scene, spec, ProbeRole::DriveTorque, "drive_torque", suffix, "drive torque", steadyAt,
+            [&] { return steadyValue(kSteadyDriveTorque, sumProbes(scene, steady, ProbeRole::DriveTorque)); },
+            steadyProbe, result);
+        // The last instant's torques beside the period means, by the same rule.
+        if (periodMeans()) {
+            const std::string also = " (the steady values are means over whole periods)";
+            addTorqueLines(
+                scene, spec, ProbeRole::ResistanceTorque, "final.resistance_torque", "", "load torque", at + also,
+                [&] { return sumProbes(scene, steady, ProbeRole::ResistanceTorque); }, instantProbe, result);
+            addTorqueLines(
+                scene, spec, ProbeRole::DriveTorque, "final.drive_torque", "", "drive torque", at + also,
+                [&] { return sumProbes(scene, steady, ProbeRole::DriveTorque); }, instantProbe, result);
+        }
+        return omegaSteady;
+    }
+};
+
+/// The design loads over the whole trajectory: the drive torque's peak (the
+/// sum on one shaft, else each drive), every coupling's signed peak and
+/// extremes, every outputs.peaks probe and body speed (with its value at
+/// `at`), and the near-centrifuging warning of a charge.
+void addTrajectoryPeaks(const Scene& scene, const ModelSpec& spec, const TrajectoryRecord& record,
+                        const SimTK::State& steady, const std::string& at, AnalysisResult& result) {
+    const std::string driveShafts = probeShafts(spec, scene, ProbeRole::DriveTorque);
+    if (record.drivesOnOneShaft)
+        result.results.push_back({"peak_drive_torque", record.peakDrive.peak(), "N*m",
+                                  "largest |drive torque| of the run (" + probeNames(scene, ProbeRole::DriveTorque) +
+                                      (driveShafts.empty() ? std::string() : " on " + driveShafts) +
+                                      "), over every integration step, maxima located inside the steps",
+                                  driveShafts});
+    else
+        for (std::size_t k = 0; k < record.driveProbes.size(); ++k) {
+            const Probe& p = scene.probes()[record.driveProbes[k]];
+            const std::string shaft = probeShaft(spec, p.name);
+            result.results.push_back({"peak_drive_torque." + p.name, record.drivePeaks[k].peak(), "N*m",
+                                      "largest |" + p.name + "| of the run on " + shaft +
+                                          ", over every integration step, maxima located inside the steps (drives "
+                                          "on different shafts: not added)",
+                                      shaft});
+        }
+    // Couplings sit on shafts of different speeds: one peak each.
+    for (std::size_t i = 0; i < scene.probes().size(); ++i)
+        if (scene.probes()[i].role == ProbeRole::CouplingTorque) {
+            const std::string name = scene.probes()[i].name;
+            const std::string shaft = probeShaft(spec, name);
+            const std::string on = ", the torque on " + (shaft.empty() ? std::string("its driving shaft") : shaft) +
+                                   " (the driving shaft; the driven shaft carries it times the speed ratio)";
+            addSignedPeaks(name, *record.peaks[i], "N*m", on, shaft, result);
+        }
+    for (const std::string& name : spec.outputs.peaks)
+        for (std::size_t i = 0; i < scene.probes().size(); ++i) {
+            const Probe& p = scene.probes()[i];
+            if (p.name != name || p.role == ProbeRole::CouplingTorque) continue;
+            addSignedPeaks(name, *record.peaks[i], p.unit, " (outputs.peaks)", "", result);
+            result.results.push_back(
+                {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
+        }
+}
+
+/// The body speeds of outputs.peaks and the charges' near-centrifuging
+/// warning (after the steady statistics in the summary's order).
+void addSpeedPeaksAndChargeWarnings(const TrajectoryRecord& record, const SimTK::State& steady, const std::string& at,
+                                    AnalysisResult& result) {
+    for (const auto& [q, tracker] : record.speedPeaks) {
+        addSignedPeaks(q.name, tracker, q.unit, " (outputs.peaks)", "", result);
+        result.results.push_back({"final." + q.name, q.f(steady), q.unit, q.name + " " + at + " (outputs.peaks)"});
+    }
+    // Above 90 % of critical speed anywhere on the trajectory (maxima
+    // located inside the steps, as the peaks), not only at an output row.
+    for (const auto& [charge, tracker] : record.criticalFractions)
+        if (tracker.peak() > 0.9)
+            result.notes.push_back("warning: charge '" + charge + "' ran at up to " +
+                                   formatNumber(100 * tracker.peak(), 4) +
+                                   " % of its critical speed (above 90 %: the charge nears centrifuging), at " +
+                                   fmt(tracker.peakTime()) + " s (located on the integrated trajectory)");
+}
+
+/// A start's instants: when each starting sequence had finished and
+/// start_time, the instant the integrated speed first reaches 95 % of the
+/// steady speed in its direction (interpolated to the crossing), with a note
+/// where a sequence ended after it.
+void addStartInstants(const Scene& scene, const SceneBody& speedBody, const TrajectoryRecord& record, bool reached,
+                      double omegaSteady, AnalysisResult& result) {
+    const auto& sequences = scene.startSequences();
+    for (std::size_t i = 0; i < sequences.size(); ++i)
+        if (record.sequenceEnd[i])
+            result.results.push_back({"sequence_end." + sequences[i].name, *record.sequenceEnd[i], "s",
+                                      "instant at which " + sequences[i].name +
+                                          "'s starting sequence had finished (starter out of circuit, clutch "
+                                          "engaged and locked)"});
+    if (!reached || omegaSteady == 0) return;
+    const double sign = omegaSteady > 0 ? 1.0 : -1.0;
+    const auto t95 = record.trace.firstReach(0.95 * omegaSteady, sign);
+    if (!t95) return;
+    result.results.push_back({"start_time", *t95, "s",
+                              "instant at which " + speedBody.name + " first reached 95 % of its steady speed "
+                              "(the end of the start; located on the integrated trajectory)"});
+    // A starting sequence still in circuit at that instant (star-delta by
+    // speed switches later): the start's end is the speed's, the sequence's
+    // end is given beside it.
+    for (std::size_t i = 0; i < sequences.size(); ++i)
+        if (record.sequenceEnd[i] && *record.sequenceEnd[i] > *t95)
+            result.notes.push_back("start_time " + fmt(*t95) + " s is the instant " + speedBody.name +
+                                   " reached 95 % of its steady speed, which this summary calls the end of the "
+                                   "start; " + sequences[i].name + "'s starting sequence ended later, at " +
+                                   fmt(*record.sequenceEnd[i]) + " s (sequence_end." + sequences[i].name +
+                                   "; docs/will-it-start.md)");
+}
+
+/// A balance that misses by more than 1 % of the run's largest energy is no
+/// result: the integration diverged or stepped too coarsely, even when every
+/// sample stayed finite (a run-out stop can end the run first). Relative to
+/// a run whose energies are all tiny (a drive limited to 1e-9 N*m holding a
+/// creeping shaft: 1e-20 J) the integrator's own error is no divergence
+/// (issue 26 item 5): the residual must also exceed the accuracy times the
+/// machine's running energy, Σ ½·J·ω_hint² over the bodies the drives hint
+/// a running speed for. Throws AnalysisError.
+void refuseOpenEnergyBalance(const Scene& scene, const ModelSpec& spec, bool replayed, const SimTK::State& last,
+                             const AnalysisResult& result) {
+    const ResultScalar* balance = result.find("energy_balance_relative");
+    double runningEnergy = 0;
+    for (const auto& [name, w] : scene.speedHints())
+        if (const BodySpec* b = spec.findBody(name)) runningEnergy += 0.5 * b->inertia * w * w;
+    const ResultScalar* residual = result.find("energy_balance_residual");
+    // Written as "not within", so that a NaN or infinite residual (a run
+    // that diverged) is refused too.
+    const bool beyondAccuracy =
+        !residual || !(std::abs(residual->value) <= spec.integrator.accuracy * runningEnergy);
+    if (!balance || std::abs(balance->value) <= kEnergyBalanceLimit || !beyondAccuracy) return;
+    std::ostringstream why;
+    why << "transient: the energy balance does not close at t = " << last.getTime() << " s (residual "
+        << balance->value << " of the run's largest energy, limit " << kEnergyBalanceLimit;
+    if (replayed) {
+        // Nothing was integrated: the energy integrals are the trapezoid
+        // rule over the replay's placements.
+        why << "; replayed, no integrator: energy integrals by the trapezoid rule over " << result.statistics.steps
+            << " placements";
+        if (spec.integrator.maxStep > 0) why << ", max_step " << spec.integrator.maxStep << " s";
+        why << "): the placements are too coarse for the drives' laws; lower integrator.max_step";
+    } else {
+        why << "; integrator " << spec.integrator.name << ", accuracy " << spec.integrator.accuracy;
+        if (spec.integrator.maxStep > 0) why << ", max_step " << spec.integrator.maxStep << " s";
+        why << "): the integration diverged or is too coarse; tighten integrator.accuracy or max_step";
+    }
+    throw AnalysisError(why.str());
+}
+
+/// The instants the figures per question mark (issue 29 item 3): the
+/// verdict's as the summary has them, the timed switchings, the last whole
+/// periods.
+TransientFigureTimes figureTimesOf(const Scene& scene, const SceneBody& speedBody, bool fromRest,
+                                   const SimTK::State& last, const WindowStatistics& windowStatistics,
+                                   const std::string& periodWhat) {
+    TransientFigureTimes times;
+    times.fromRest = fromRest;
+    times.endTime = last.getTime();
+    times.speedBody = speedBody.name;
+    for (const auto& e : scene.switchEvents())
+        if (e.kind == Scene::SwitchEvent::Kind::StarterStep)
+            times.steps.push_back({e.time, e.what});
+        else if (e.kind == Scene::SwitchEvent::Kind::DriveOff)
+            times.switchOffs.push_back({e.time, e.what});
+    if (windowStatistics.valid() && windowStatistics.periods() > 0) {
+        const auto periods = windowStatistics.periodMeans(0);
+        const std::size_t shown = std::min<std::size_t>(periods.size(), kFigurePeriods);
+        if (shown > 0) {
+            times.steadyFrom = periods[periods.size() - shown].t0;
+            times.steadyTo = periods.back().t1;
+            times.steadyWhat = "the last " + std::to_string(shown) + " whole " + periodWhat + " (" +
+                               fmt(times.steadyFrom) + " to " + fmt(times.steadyTo) + " s)";
+        }
+    }
+    return times;
+}
+
+}  // namespace
+
 AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, const SampleObserver& observer) {
     const ElementSpec& sc = spec.scenario;
     checkStopSpeed(spec);
@@ -508,25 +935,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
 
     Simulation sim(*scene, spec.integrator);
     sim.initialize(state, sc.text("zero_dof") == "replay");
-    // A condition of each instant (a held charge's wall torque) is solved
-    // only by a replay, at every sample; a history along the run (a frozen
-    // charge's release latch) only by an integration (ElementSchema::analysisNeeds).
-    for (const auto& e : spec.elements) {
-        const ElementSchema* s = schemaOf(e);
-        for (const auto& need : s ? s->analysisNeeds : std::vector<ElementSchema::AnalysisNeed>{}) {
-            if (!need.matches(e)) continue;
-            if (need.kind == ElementSchema::AnalysisNeed::Kind::EachInstant && !sim.isReplay())
-                throw e.error(need.key, need.value + ": " + need.why +
-                                            ": a transient with one must have no free degree of freedom and be "
-                                            "replayed (" +
-                                            (sc.text("zero_dof") == "integrate" ? std::string("zero_dof is integrate")
-                                                                                : sim.replayReason()) +
-                                            "); use " + need.alternative);
-            if (need.kind == ElementSchema::AnalysisNeed::Kind::StepHistory && sim.isReplay())
-                throw e.error(need.key, need.value + ": " + need.why + ", and this run would be replayed (" +
-                                            sim.replayReason() + "): set scenario.zero_dof: integrate");
-        }
-    }
+    checkAnalysisNeeds(spec, sim);
     const SimTK::State first = sim.state();
     if (start == "steady") checkSteadyStart(*scene, spec, state, first);
 
@@ -541,132 +950,14 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     // (or the end). The verdict judges the speed over it, the power split
     // averages over it (from the first sample in it to the steady sample).
     const double tWindowEnd = std::min(switchTime, endTime);
-    double hold = sc.number("hold_time") > 0 ? sc.number("hold_time") : 0.1 * (tWindowEnd - state.getTime());
     // How outputs.statistics_period cuts the window into whole periods.
     std::string periodWhy;
     const WindowStatistics::PeriodRule periodRule = statisticsPeriod(*scene, spec, periodWhy);
-    // Under a periodic load the hold is judged on period means (checkHold),
-    // which needs kHoldPeriods whole periods in the window: a shorter hold
-    // window is lengthened to them when the run before switch-off holds
-    // them (a period of revolutions is estimated from the shaft's hinted
-    // running speed, with a quarter of margin for a slower shaft).
-    {
-        double period = 0;
-        if (periodRule.kind == WindowStatistics::PeriodRule::Kind::Time) period = periodRule.period;
-        if (periodRule.kind == WindowStatistics::PeriodRule::Kind::Angle) {
-            const auto hints = scene->speedHints();
-            const auto hint = hints.find(periodRule.body);
-            if (hint != hints.end() && std::isfinite(hint->second) && hint->second != 0)
-                period = 1.25 * 2 * SimTK::Pi / std::abs(hint->second);
-        }
-        const double need = kHoldPeriods * period;
-        if (period > 0 && need > hold && need <= tWindowEnd - state.getTime()) {
-            result.notes.push_back("analysis window lengthened from " + fmt(hold) + " s (scenario.hold_time" +
-                                   (sc.number("hold_time") > 0 ? std::string() : ", a tenth of the run") + ") to " +
-                                   fmt(need) + " s, to hold " + std::to_string(kHoldPeriods) + " whole " +
-                                   periodRule.what + " (" + periodWhy +
-                                   "): the hold verdict and the steady values are judged over whole load periods");
-            hold = need;
-        }
-    }
+    const double hold =
+        analysisWindowLength(*scene, spec, periodRule, periodWhy, state.getTime(), tWindowEnd, result);
     const double tWindowStart = tWindowEnd - hold - 1e-9 * std::max(1.0, std::abs(tWindowEnd));
-    SimTK::State windowStart;
-    bool windowCopied = false;
-    // Design loads from the integrated trajectory (every step, maxima
-    // located inside the steps), never from the output rows: the drive
-    // torque's sum, every coupling and every outputs.peaks probe.
-    const auto& probes = scene->probes();
-    // Torques on different shafts never add (issue 32): one drive peak per
-    // drive when the drives are on several shafts.
-    const std::vector<std::size_t> driveProbes = probesOfRole(*scene, ProbeRole::DriveTorque);
-    const bool drivesOnOneShaft = distinctShafts(spec, *scene, ProbeRole::DriveTorque) <= 1;
-    PeakTracker peakDrive([&](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::DriveTorque); });
-    std::vector<PeakTracker> drivePeaks;
-    if (!drivesOnOneShaft)
-        for (std::size_t i : driveProbes)
-            drivePeaks.emplace_back([&probes = scene->probes(), i](const SimTK::State& s) { return probes[i].value(s); });
-    // Every coupling and outputs.peaks probe: its largest and smallest value
-    // over the run (run_max., run_min.), the signed peak the larger in size.
-    std::vector<std::optional<SignedPeaks>> peaks(probes.size());
-    for (std::size_t i = 0; i < probes.size(); ++i)
-        if (probes[i].role == ProbeRole::CouplingTorque ||
-            std::find(spec.outputs.peaks.begin(), spec.outputs.peaks.end(), probes[i].name) != spec.outputs.peaks.end())
-            peaks[i].emplace([&probes, i](const SimTK::State& s) { return probes[i].value(s); });
-    // speed_body's speed at every step end: the verdicts and start_time.
-    SpeedTrace trace;
-    // Steady-operation statistics (issue 29 item 1) over whole periods of
-    // the analysis window, from the trajectory: the summary's steady values
-    // (speed_body's speed, the load torques', load powers' and drive
-    // torques' sums), then every outputs.statistics name; and the peaks of
-    // the body speeds outputs.peaks names.
-    std::vector<WindowStatistics::Fn> statisticsOf = {
-        [&speedBody](const SimTK::State& s) { return pinSpeed(s, speedBody.mobod); },
-        [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::ResistanceTorque); },
-        [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::ResistancePower); },
-        [&scene](const SimTK::State& s) { return sumProbes(*scene, s, ProbeRole::DriveTorque); }};
-    const std::size_t kSteadyQuantities = statisticsOf.size();
-    std::vector<NamedQuantity> statisticsNamed;
-    for (const std::string& name : spec.outputs.statistics)
-        if (const auto q = findQuantity(*scene, name)) {
-            statisticsNamed.push_back(*q);
-            statisticsOf.push_back(q->f);
-        }
-    // Each load and drive torque alone too: torques on different shafts are
-    // reported one by one, never added (their period means likewise).
-    std::map<std::size_t, std::size_t> probeStatistic;  // probe index -> statisticsOf index
-    for (ProbeRole role : {ProbeRole::ResistanceTorque, ProbeRole::DriveTorque})
-        for (std::size_t i : probesOfRole(*scene, role)) {
-            probeStatistic[i] = statisticsOf.size();
-            statisticsOf.push_back([&probes = scene->probes(), i](const SimTK::State& s) { return probes[i].value(s); });
-        }
-    WindowStatistics windowStatistics(statisticsOf, tWindowStart, tWindowEnd, periodRule);
-    std::vector<std::pair<NamedQuantity, SignedPeaks>> speedPeaks;
-    for (const std::string& name : spec.outputs.peaks)
-        if (const auto q = findQuantity(*scene, name); q && !q->body.empty()) speedPeaks.emplace_back(*q, SignedPeaks(q->f));
-    // A charge's fraction of its critical speed (SegmentCharge's
-    // NAME.fraction_of_critical), its largest over the trajectory for the
-    // near-centrifuging warning. Named by type: a capability would need a
-    // field in ElementSchema.h, which this change leaves alone.
-    std::vector<std::pair<std::string, PeakTracker>> criticalFractions;
-    for (const auto& e : spec.elements) {
-        if (e.type != "SegmentCharge") continue;
-        for (std::size_t i = 0; i < probes.size(); ++i)
-            if (probes[i].name == e.name + ".fraction_of_critical")
-                criticalFractions.emplace_back(
-                    e.name, PeakTracker([&probes, i](const SimTK::State& s) { return probes[i].value(s); }));
-    }
-    // When each starting sequence first stood finished (a step end's time).
-    const auto& sequences = scene->startSequences();
-    std::vector<std::optional<double>> sequenceEnd(sequences.size());
-    auto onStep = [&](const SimTK::State& s) {
-        const double t = s.getTime();
-        trace.add(t, pinSpeed(s, speedBody.mobod), speedBody.mobod.getOneUDot(s, SimTK::MobilizerUIndex(0)));
-        peakDrive.step(sim, s);
-        for (auto& p : drivePeaks) p.step(sim, s);
-        for (auto& p : peaks)
-            if (p) p->step(sim, s);
-        windowStatistics.step(sim, s);
-        for (auto& p : speedPeaks) p.second.step(sim, s);
-        for (auto& p : criticalFractions) p.second.step(sim, s);
-        // A sequence's end located inside the step (bisection on the
-        // trajectory: a ramp ends at its time, not at the next step end).
-        for (std::size_t i = 0; i < sequences.size(); ++i)
-            if (!sequenceEnd[i] && sequences[i].state(s).finished) {
-                double a = sim.trajectoryFrom(), b = t;
-                if (a < b && !sequences[i].state(sim.trajectoryAt(a)).finished)
-                    for (int k = 0; k < 60 && b - a > 1e-12 * std::max(1.0, b); ++k) {
-                        const double c = 0.5 * (a + b);
-                        (sequences[i].state(sim.trajectoryAt(c)).finished ? b : a) = c;
-                    }
-                sequenceEnd[i] = b;
-            }
-        // The power split's window starts exactly at tWindowStart (a state
-        // on the trajectory, not the first sample after it).
-        if (!windowCopied && t >= tWindowStart && tWindowStart <= switchTime) {
-            windowStart = sim.trajectoryAt(std::max(tWindowStart, sim.trajectoryFrom()));
-            windowCopied = true;
-        }
-    };
+    TrajectoryRecord record(spec, *scene, speedBody, tWindowStart, tWindowEnd, switchTime, periodRule);
+    auto onStep = [&](const SimTK::State& s) { record.step(sim, s); };
     auto onSample = [&](const SimTK::State& s) {
         const std::vector<double>& values = sim.probeValues();
         table.record(s, values);
@@ -697,151 +988,33 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     if (!steadyCopied && !(switchTime < sim.lastSample().getTime())) steady = last;
 
     scene->system().realize(steady, SimTK::Stage::Acceleration);
-    const double omega = pinSpeed(steady, speedBody.mobod);
     const bool switched = switchTime < endTime;
     const std::string at = switched ? "just before switch-off" : "at the end of the run";
 
     // The start verdict (from rest only): over the trajectory before switch-off.
-    const HoldCheck holdCheck = checkHold(*scene, spec, speedBody, trace, switchTime, hold, windowStatistics, periodRule);
+    const HoldCheck holdCheck =
+        checkHold(*scene, spec, speedBody, record.trace, switchTime, hold, record.windowStatistics, periodRule);
     if (start == "rest")
         judgeStart(*scene, spec, speedBody, holdCheck, steady, result);
     else
         judgeRun(*scene, spec, speedBody, holdCheck, switched, switchTime, stopTime, last, result);
-    // A start that did not complete has no steady values. (A run from a
-    // given or steady state keeps the names: what it ends in is the user's
-    // question, e.g. a braked run-out's end speed.)
-    const bool reached = start != "rest" || result.verdict == "completed";
     // A start that did not complete has no steady values: its numbers are
-    // what the shafts did at the end of the start window.
-    const std::string suffix = reached ? "" : "_at_end";
-    // Under a periodic load the steady values are means over whole periods
-    // of the analysis window (WindowStatistics; docs/model-format.md,
-    // "Steady-operation statistics"); the last instant's stay as final.NAME.
-    const bool periodMeans = reached && windowStatistics.valid() && windowStatistics.periods() > 0;
-    const std::string windowText =
-        !windowStatistics.valid() ? std::string()
-                                  : std::to_string(windowStatistics.periods()) + " whole " + periodRule.what + ", " +
-                                        fmt(windowStatistics.windowStart()) + " to " +
-                                        fmt(windowStatistics.windowEnd()) + " s (" + periodWhy + ")";
-    const std::string steadyAt = periodMeans ? "averaged over " + windowText : at;
-    auto steadyValue = [&](std::size_t i, double instant) {
-        return periodMeans ? windowStatistics.values(i).mean : instant;
-    };
-    auto steadyProbe = [&](std::size_t probe) {
-        return steadyValue(probeStatistic.at(probe), scene->probes()[probe].value(steady));
-    };
-    auto instantProbe = [&](std::size_t probe) { return scene->probes()[probe].value(steady); };
-    const double omegaSteady = steadyValue(0, omega);
-    result.results.push_back({reached ? "steady_speed" : "speed_at_end", omegaSteady, "rad/s",
-                              "speed of " + speedBody.name + " " + steadyAt});
-    const std::string driveShafts = probeShafts(spec, *scene, ProbeRole::DriveTorque);
-    // A torque is reported on its shaft: loads (drives) on one shaft are
-    // summed, loads on several shafts are each reported alone, never added
-    // (a torque on the table and one on the motor shaft have no sum).
-    addTorqueLines(
-        *scene, spec, ProbeRole::ResistanceTorque, "resistance_torque", suffix, "load torque", steadyAt,
-        [&] { return steadyValue(1, sumProbes(*scene, steady, ProbeRole::ResistanceTorque)); }, steadyProbe, result);
-    result.results.push_back({"power" + suffix, steadyValue(2, sumProbes(*scene, steady, ProbeRole::ResistancePower)),
-                              "W",
-                              "power absorbed by the loads " + steadyAt +
-                                  ", measured at each load's own shaft and summed (" +
-                                  probeNames(*scene, ProbeRole::ResistancePower) +
-                                  "); friction, damping and brake heat are not in it (mean_power.*)"});
-    if (periodMeans)
-        addMeanPower(*scene, windowStatistics.startState(), windowStatistics.endState(), windowText, result);
-    else if (windowCopied)
-        addMeanPower(*scene, windowStart, steady,
-                     "the last " + fmt(steady.getTime() - windowStart.getTime()) + " s " +
-                         (switched ? "before switch-off" : "of the run") + " (" + fmt(windowStart.getTime()) + " to " +
-                         fmt(steady.getTime()) + " s)",
-                     result);
-    addTorqueLines(
-        *scene, spec, ProbeRole::DriveTorque, "drive_torque", suffix, "drive torque", steadyAt,
-        [&] { return steadyValue(3, sumProbes(*scene, steady, ProbeRole::DriveTorque)); }, steadyProbe, result);
-    // The last instant's torques beside the period means, by the same rule.
-    if (periodMeans) {
-        const std::string also = " (the steady values are means over whole periods)";
-        addTorqueLines(
-            *scene, spec, ProbeRole::ResistanceTorque, "final.resistance_torque", "", "load torque", at + also,
-            [&] { return sumProbes(*scene, steady, ProbeRole::ResistanceTorque); }, instantProbe, result);
-        addTorqueLines(
-            *scene, spec, ProbeRole::DriveTorque, "final.drive_torque", "", "drive torque", at + also,
-            [&] { return sumProbes(*scene, steady, ProbeRole::DriveTorque); }, instantProbe, result);
-    }
-    if (drivesOnOneShaft)
-        result.results.push_back({"peak_drive_torque", peakDrive.peak(), "N*m",
-                                  "largest |drive torque| of the run (" + probeNames(*scene, ProbeRole::DriveTorque) +
-                                      (driveShafts.empty() ? std::string() : " on " + driveShafts) +
-                                      "), over every integration step, maxima located inside the steps",
-                                  driveShafts});
-    else
-        for (std::size_t k = 0; k < driveProbes.size(); ++k) {
-            const Probe& p = scene->probes()[driveProbes[k]];
-            const std::string shaft = probeShaft(spec, p.name);
-            result.results.push_back({"peak_drive_torque." + p.name, drivePeaks[k].peak(), "N*m",
-                                      "largest |" + p.name + "| of the run on " + shaft +
-                                          ", over every integration step, maxima located inside the steps (drives "
-                                          "on different shafts: not added)",
-                                      shaft});
-        }
-    // Couplings sit on shafts of different speeds: one peak each.
-    for (std::size_t i = 0; i < scene->probes().size(); ++i)
-        if (scene->probes()[i].role == ProbeRole::CouplingTorque) {
-            const std::string name = scene->probes()[i].name;
-            const std::string shaft = probeShaft(spec, name);
-            const std::string on = ", the torque on " + (shaft.empty() ? std::string("its driving shaft") : shaft) +
-                                   " (the driving shaft; the driven shaft carries it times the speed ratio)";
-            addSignedPeaks(name, *peaks[i], "N*m", on, shaft, result);
-        }
-    for (const std::string& name : spec.outputs.peaks)
-        for (std::size_t i = 0; i < scene->probes().size(); ++i) {
-            const Probe& p = scene->probes()[i];
-            if (p.name != name || p.role == ProbeRole::CouplingTorque) continue;
-            addSignedPeaks(name, *peaks[i], p.unit, " (outputs.peaks)", "", result);
-            result.results.push_back(
-                {"final." + name, p.value(steady), p.unit, name + " " + at + " (outputs.peaks)"});
-        }
-    addSteadyStatistics(*scene, speedBody, windowStatistics, kSteadyQuantities, statisticsNamed, periodRule,
-                        periodWhy, windowText, reached, steady, at, result);
-    for (const auto& [q, tracker] : speedPeaks) {
-        addSignedPeaks(q.name, tracker, q.unit, " (outputs.peaks)", "", result);
-        result.results.push_back({"final." + q.name, q.f(steady), q.unit, q.name + " " + at + " (outputs.peaks)"});
-    }
-    // Above 90 % of critical speed anywhere on the trajectory (maxima
-    // located inside the steps, as the peaks), not only at an output row.
-    for (const auto& [charge, tracker] : criticalFractions)
-        if (tracker.peak() > 0.9)
-            result.notes.push_back("warning: charge '" + charge + "' ran at up to " + formatNumber(100 * tracker.peak(), 4) +
-                                   " % of its critical speed (above 90 %: the charge nears centrifuging), at " +
-                                   fmt(tracker.peakTime()) + " s (located on the integrated trajectory)");
+    // what the shafts did at the end of the start window. (A run from a
+    // given or steady state keeps the names: what it ends in is the user's
+    // question, e.g. a braked run-out's end speed.) Under a periodic load
+    // the steady values are means over whole periods of the analysis window
+    // (WindowStatistics; docs/model-format.md, "Steady-operation
+    // statistics"); the last instant's stay as final.NAME.
+    const bool reached = start != "rest" || result.verdict == "completed";
+    const SteadyReport report{*scene, spec, speedBody, record, steady, reached, switched, at, periodRule.what,
+                              periodWhy};
+    const double omegaSteady = report.add(result);
+    addTrajectoryPeaks(*scene, spec, record, steady, at, result);
+    addSteadyStatistics(*scene, speedBody, record.windowStatistics, kSteadyQuantities, record.statisticsNamed,
+                        periodRule, periodWhy, report.windowText(), reached, steady, at, result);
+    addSpeedPeaksAndChargeWarnings(record, steady, at, result);
     addMotorReports(*scene, last, result);
-    if (start == "rest")
-        for (std::size_t i = 0; i < sequences.size(); ++i)
-            if (sequenceEnd[i])
-                result.results.push_back({"sequence_end." + sequences[i].name, *sequenceEnd[i], "s",
-                                          "instant at which " + sequences[i].name +
-                                              "'s starting sequence had finished (starter out of circuit, clutch "
-                                              "engaged and locked)"});
-    if (start == "rest" && reached && omegaSteady != 0) {
-        // The instant the integrated speed first reaches 95 % of the steady
-        // speed in its direction (interpolated to the crossing).
-        const double sign = omegaSteady > 0 ? 1.0 : -1.0;
-        if (const auto t95 = trace.firstReach(0.95 * omegaSteady, sign)) {
-            result.results.push_back({"start_time", *t95, "s",
-                                      "instant at which " + speedBody.name + " first reached 95 % of its steady speed "
-                                      "(the end of the start; located on the integrated trajectory)"});
-            // A starting sequence still in circuit at that instant (star-delta
-            // by speed switches later): the start's end is the speed's, the
-            // sequence's end is given beside it.
-            for (std::size_t i = 0; i < sequences.size(); ++i)
-                if (sequenceEnd[i] && *sequenceEnd[i] > *t95)
-                    result.notes.push_back("start_time " + fmt(*t95) + " s is the instant " + speedBody.name +
-                                           " reached 95 % of its steady speed, which this summary calls the end of "
-                                           "the start; " + sequences[i].name + "'s starting sequence ended later, at " +
-                                           fmt(*sequenceEnd[i]) + " s (sequence_end." + sequences[i].name +
-                                           "; docs/will-it-start.md)");
-        }
-    }
+    if (start == "rest") addStartInstants(*scene, speedBody, record, reached, omegaSteady, result);
     if (stopTime) {
         result.results.push_back({"runout_time", *stopTime - switchTime, "s",
                                   "from switch-off to the first stop of " + runoutName});
@@ -849,66 +1022,12 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     } else if (!runoutName.empty() && std::isfinite(switchTime)) {
         result.notes.push_back(runoutName + " did not come to rest before end_time");
     }
-
     addEnergyBalance(*scene, first, last, result);
-    // A balance that misses by more than 1 % of the run's largest energy is
-    // no result: the integration diverged or stepped too coarsely, even when
-    // every sample stayed finite (a run-out stop can end the run first).
-    const ResultScalar* balance = result.find("energy_balance_relative");
-    // Relative to a run whose energies are all tiny (a drive limited to
-    // 1e-9 N*m holding a creeping shaft: 1e-20 J) the integrator's own error
-    // is no divergence (issue 26 item 5): the residual must also exceed the
-    // accuracy times the machine's running energy, Σ ½·J·ω_hint² over the
-    // bodies the drives hint a running speed for.
-    double runningEnergy = 0;
-    for (const auto& [name, w] : scene->speedHints())
-        if (const BodySpec* b = spec.findBody(name)) runningEnergy += 0.5 * b->inertia * w * w;
-    const ResultScalar* residual = result.find("energy_balance_residual");
-    // Written as "not within", so that a NaN or infinite residual (a run
-    // that diverged) is refused too.
-    const bool beyondAccuracy =
-        !residual || !(std::abs(residual->value) <= spec.integrator.accuracy * runningEnergy);
-    if (balance && !(std::abs(balance->value) <= kEnergyBalanceLimit) && beyondAccuracy) {
-        std::ostringstream why;
-        why << "transient: the energy balance does not close at t = " << last.getTime() << " s (residual "
-            << balance->value << " of the run's largest energy, limit " << kEnergyBalanceLimit;
-        if (sim.isReplay()) {
-            // Nothing was integrated: the energy integrals are the trapezoid
-            // rule over the replay's placements.
-            why << "; replayed, no integrator: energy integrals by the trapezoid rule over " << result.statistics.steps
-                << " placements";
-            if (spec.integrator.maxStep > 0) why << ", max_step " << spec.integrator.maxStep << " s";
-            why << "): the placements are too coarse for the drives' laws; lower integrator.max_step";
-        } else {
-            why << "; integrator " << spec.integrator.name << ", accuracy " << spec.integrator.accuracy;
-            if (spec.integrator.maxStep > 0) why << ", max_step " << spec.integrator.maxStep << " s";
-            why << "): the integration diverged or is too coarse; tighten integrator.accuracy or max_step";
-        }
-        throw AnalysisError(why.str());
-    }
+    refuseOpenEnergyBalance(*scene, spec, sim.isReplay(), last, result);
     addDefaultPlots(result);
-    // The figures per question (issue 29 item 3): the verdict's instants as
-    // the summary has them, the timed switchings, the last whole periods.
-    TransientFigureTimes figureTimes;
-    figureTimes.fromRest = start == "rest";
-    figureTimes.endTime = last.getTime();
-    figureTimes.speedBody = speedBody.name;
-    for (const auto& e : scene->switchEvents())
-        if (e.kind == Scene::SwitchEvent::Kind::StarterStep)
-            figureTimes.steps.push_back({e.time, e.what});
-        else if (e.kind == Scene::SwitchEvent::Kind::DriveOff)
-            figureTimes.switchOffs.push_back({e.time, e.what});
-    if (windowStatistics.valid() && windowStatistics.periods() > 0) {
-        const auto periods = windowStatistics.periodMeans(0);
-        const std::size_t shown = std::min<std::size_t>(periods.size(), kFigurePeriods);
-        if (shown > 0) {
-            figureTimes.steadyFrom = periods[periods.size() - shown].t0;
-            figureTimes.steadyTo = periods.back().t1;
-            figureTimes.steadyWhat = "the last " + std::to_string(shown) + " whole " + periodRule.what + " (" +
-                                     fmt(figureTimes.steadyFrom) + " to " + fmt(figureTimes.steadyTo) + " s)";
-        }
-    }
-    addTransientFigures(*scene, spec, figureTimes, result);
+    addTransientFigures(
+        *scene, spec,
+        figureTimesOf(*scene, speedBody, start == "rest", last, record.windowStatistics, periodRule.what), result);
     return result;
 }
 
