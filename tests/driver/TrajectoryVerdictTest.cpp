@@ -110,6 +110,37 @@ TEST(ReversingTrain, ARunOutOfAShaftTurningBackwardsEndsAtItsStop) {
     EXPECT_NEAR(resultOf(r, "runout_time"), omega / decel, 2e-3 * omega / decel);
 }
 
+// The run-out's stop is located on the integrated trajectory, not
+// extrapolated from the step end before it. A drum (J = 1 kg*m^2) at
+// 100 rad/s, its drive switched off at t = 0, against M0 + b·ω (M0 = 1 N*m,
+// b = 1 N*m*s/rad): ω' = −(M0 + b·ω)/J, so it reaches the stop speed
+// ω_s = 0.1 rad/s at t_s = (J/b)·ln((ω0 + M0/b)/(ω_s + M0/b)), and
+// runout_time is t_s + ω_s/((M0 + b·ω_s)/J) (docs/model-format.md, stop_speed:
+// extrapolated to zero with the deceleration there). Extrapolating from the
+// last step end above ω_s instead was off by ~1e-3 of the time here (a
+// linear extrapolation across a curved ω(t)).
+TEST(RunOut, StopIsLocatedOnTheTrajectoryOfACurvedDeceleration) {
+    const char* model = R"(format_version: 1
+name: exponential run-out
+bodies:
+  - {name: drum, inertia: 1 kg*m^2, joint: {type: pin, parent: ground}, initial_speed: 100 rad/s}
+elements:
+  - {type: InductionMotor, name: motor, body: drum, law: linear, rated_torque: 1 N*m, rated_speed: 900 rpm,
+     synchronous_speed: 1000 rpm, switch_off_time: 0 s}
+  - {type: ResistanceTorque, name: load, body: drum, constant_torque: 1 N*m, viscous_coefficient: 1 N*m*s/rad}
+scenario: {analysis: transient, initial_state: file, end_time: 10 s, speed_body: drum, runout_body: drum}
+integrator: {name: RungeKuttaMerson, accuracy: 1e-6}
+outputs: {sample_interval: 1 s, plots: false}
+)";
+    const double J = 1, M0 = 1, b = 1, w0 = 100, ws = 0.1;
+    const double expected = (J / b) * std::log((w0 + M0 / b) / (ws + M0 / b)) + ws / ((M0 + b * ws) / J);
+    for (const char* interval : {"1 s", "0.01 s"}) {
+        const AnalysisResult r =
+            runModelFile(writeModel("exponential_runout.yaml", model), {{"outputs.sample_interval", interval}});
+        EXPECT_NEAR(resultOf(r, "runout_time"), expected, 1e-5 * expected) << interval;
+    }
+}
+
 TEST(ReversingTrain, ASweepRecordsTheStallAsStalled) {
     const std::string dir = ::testing::TempDir() + "/reversing_sweep";
     std::filesystem::remove_all(dir);
