@@ -19,6 +19,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/Analysis.h"
+#include "driver/analyses/SteadyStart.h"
 
 #include <cmath>
 #include <cstdio>
@@ -36,11 +37,7 @@ using namespace milldyn;
 long rowsOnly(const ModelSpec& spec, bool emptyOnStep) {
     const ElementSpec& sc = spec.scenario;
     auto scene = buildScene(spec);
-    SimTK::State state = initialState(*scene, spec);
-    const std::string start = sc.text("initial_state");
-    if (start == "rest")
-        for (const auto& b : scene->bodies()) b.mobod.setOneU(state, SimTK::MobilizerUIndex(0), 0.0);
-    if (start == "steady") state = solveSteadyState(*scene, state);
+    const SimTK::State state = transientInitialState(*scene, spec);
     AnalysisResult result;
     SampleTable table(*scene, result);
     double switchTime = std::numeric_limits<double>::infinity();

@@ -1,5 +1,6 @@
 #pragma once
-// The check that a transient from initial_state: steady starts steady.
+// A transient's initial state (scenario.initial_state) and the check that a
+// transient from initial_state: steady starts steady.
 
 #include "driver/ModelSpec.h"
 #include "plugins/scene/Scene.h"
@@ -22,5 +23,10 @@ namespace milldyn {
  * itself judged; the running it disturbs still is.
  */
 void checkSteadyStart(const Scene& scene, const ModelSpec& spec, const SimTK::State& solved, const SimTK::State& first);
+
+/// The state a transient starts from, by scenario.initial_state: the
+/// model's initial speeds (file), every speed 0 (rest), or the solved
+/// steady running (steady; solveSteadyState).
+SimTK::State transientInitialState(const Scene& scene, const ModelSpec& spec);
 
 }  // namespace milldyn

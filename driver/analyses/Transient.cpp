@@ -450,6 +450,15 @@ void judgeRun(const Scene& scene, const ModelSpec& spec, const SceneBody& body, 
 
 }  // namespace
 
+SimTK::State transientInitialState(const Scene& scene, const ModelSpec& spec) {
+    SimTK::State state = initialState(scene, spec);
+    const std::string start = spec.scenario.text("initial_state");
+    if (start == "rest")
+        for (const auto& b : scene.bodies()) b.mobod.setOneU(state, SimTK::MobilizerUIndex(0), 0.0);
+    if (start == "steady") state = solveSteadyState(scene, state);
+    return state;
+}
+
 void checkSteadyStart(const Scene& scene, const ModelSpec& spec, const SimTK::State& solved, const SimTK::State& first) {
     // The solved configuration (switch flags, kept loads as solved) at the
     // integration's start positions and speeds. A switching due at t = 0
@@ -916,11 +925,8 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
     const ElementSpec& sc = spec.scenario;
     checkStopSpeed(spec);
     auto scene = buildScene(spec);
-    SimTK::State state = initialState(*scene, spec);
+    const SimTK::State state = transientInitialState(*scene, spec);
     const std::string start = sc.text("initial_state");
-    if (start == "rest")
-        for (const auto& b : scene->bodies()) b.mobod.setOneU(state, SimTK::MobilizerUIndex(0), 0.0);
-    if (start == "steady") state = solveSteadyState(*scene, state);
 
     AnalysisResult result;
     result.derived = derivedResults(*scene);
