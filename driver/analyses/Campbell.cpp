@@ -99,14 +99,6 @@ struct Point {
     std::vector<double> lines;  ///< each line's frequency [rad/s]
 };
 
-/// The open belt's length [m] between pins `p1`, `p2` with pitch radii r1, r2.
-double openBeltLength(const SimTK::Vec3& p1, double r1, const SimTK::Vec3& p2, double r2) {
-    const double l = (p2 - p1).norm();
-    const double beta = std::asin(std::min(1.0, std::abs(r2 - r1) / l));
-    const double small = std::min(r1, r2), large = std::max(r1, r2);
-    return small * (M_PI - 2 * beta) + large * (M_PI + 2 * beta) + 2 * l * std::cos(beta);
-}
-
 class CampbellModel {
 public:
     CampbellModel(const ModelSpec& spec) : m_spec(spec), m_sc(spec.scenario) {
@@ -293,17 +285,6 @@ private:
                                        h->forcingOrder(k),
                                        "harmonic " + std::to_string(k) + " of a time-clock load: fixed frequency"});
                 }
-            }
-            if (e.type == "ShaftBelt") {
-                const SceneBody* d1 = scene.findBody(e.text("driver"));
-                const SceneBody* d2 = scene.findBody(e.text("driven"));
-                if (!d1 || !d2) continue;
-                const double r1 = e.number("driver_sheave_radius"), r2 = e.number("driven_sheave_radius");
-                const double length = openBeltLength(d1->mobod.getDefaultInboardFrame().p(), r1,
-                                                     d2->mobod.getDefaultInboardFrame().p(), r2);
-                m_lines.push_back({e.name + ".belt_passing", Line::Kind::Shaft, d1->name, kTwoPi * r1 / length, 0,
-                                   "belt speed over belt length (" + formatNumber(length) + " m): " +
-                                       formatNumber(kTwoPi * r1 / length) + " per revolution of " + d1->name});
             }
         }
         std::vector<double> multiples = m_sc.numbers("supply_multiples");

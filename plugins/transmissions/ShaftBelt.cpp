@@ -167,6 +167,15 @@ void buildShaftBelt(const ElementSpec& spec, Scene& scene) {
                                       return r1 * a.getOneUDot(s, kU) - r2 * b.getOneUDot(s, kU);
                                   }});
     scene.addSpeedRelation(driver->name, driven->name, r2 / r1);
+    // The belt's length L = r1·θ1 + r2·θ2 + 2·l·cos β (the open belt's
+    // common external tangents) and its passing frequency: one point of the
+    // belt passes the driver's sheave 2π·r1/L times per revolution of the
+    // driver, an excitation order the Campbell diagram and resonance_map list.
+    const BeltSpans spans = calcBeltSpans(pinCentre(driver->mobod), r1, pinCentre(driven->mobod), r2);
+    const double length = r1 * spans.wrapFixed + r2 * spans.wrapDrum + 2 * spans.centreDistance * std::cos(spans.beta);
+    scene.addDerivedValue({n + ".belt_length", length, "m",
+                           "pitch length of the open belt, r1·θ1 + r2·θ2 + 2·l·cos β (l the pins' distance)"});
+    scene.addOrderExcitation({n + ".belt_passing", driver->name, 2 * Pi * r1 / length});
     char text[160];
     std::snprintf(text, sizeof text, "ratio %.4g, wrap %.4g deg on the small sheave, grip e^(μθ) = %.4g", r2 / r1,
                   impl->getWrap() * 180 / Pi, impl->getGripRatio());

@@ -187,6 +187,54 @@ TEST(Campbell, ExtraOrdersAndCrossingsCsvNameTheLine) {
     EXPECT_NE(plot.find("natural_frequency_2"), std::string::npos);
 }
 
+// A ShaftBelt's passing frequency is an order of its driver: a point of
+// the belt passes the driver's sheave 2π·r1/L times per driver revolution,
+// L the open belt's pitch length (textbook): with l the pins' distance and
+// sin β = |r2 − r1|/l, L = r_small·(π − 2β) + r_large·(π + 2β) + 2·l·cos β.
+// Here r1 = 0.1 m, r2 = 0.3 m, l = 0.8 m: L = 2.90691 m. The line is the
+// Campbell diagram's and resonance_map's alike (Scene's order excitations).
+TEST(Campbell, BeltPassingIsAnOrderOfTheDriverFromTheBeltLength) {
+    const std::string model =
+        "format_version: 1\nname: belt\nbodies:\n"
+        "  - {name: motor_shaft, inertia: 0.5 kg*m^2, joint: {type: pin, parent: ground}}\n"
+        "  - {name: drum, inertia: 20 kg*m^2, joint: {type: pin, parent: ground, location: [0.8 m, 0 m, 0 m]}}\n"
+        "elements:\n"
+        "  - {type: InductionMotor, name: motor, body: motor_shaft, law: kloss, rated_torque: 100 N*m, "
+        "rated_speed: 1440 rpm, synchronous_speed: 1500 rpm, breakdown_ratio: 2.5}\n"
+        "  - {type: ShaftBelt, name: belt, driver: motor_shaft, driven: drum, driver_sheave_radius: 0.1 m, "
+        "driven_sheave_radius: 0.3 m, pretension: 2000 N, span_stiffness: 2e5 N/m, span_damping: 50 N*s/m, "
+        "friction_coefficient: 1.5}\n"
+        "  - {type: ResistanceTorque, name: load, body: drum, constant_torque: 100 N*m}\n"
+        "scenario: {SCENARIO}\noutputs: {plots: false}\n";
+    auto withScenario = [&](const std::string& scenario) {
+        std::string text = model;
+        text.replace(text.find("SCENARIO"), 8, scenario);
+        return runAnalysis(readModelText(text, "belt.yaml", defaultModelReader()));
+    };
+    const double r1 = 0.1, r2 = 0.3, l = 0.8;
+    const double beta = std::asin(std::abs(r2 - r1) / l);
+    const double length = std::min(r1, r2) * (M_PI - 2 * beta) + std::max(r1, r2) * (M_PI + 2 * beta) +
+                          2 * l * std::cos(beta);
+    const double order = 2 * M_PI * r1 / length;  // per revolution of the driver
+    const AnalysisResult c = withScenario("analysis: campbell, speed_min: 20 rad/s, speed_max: 160 rad/s, points: 8");
+    const ResultScalar* derived = nullptr;
+    for (const auto& d : c.derived)
+        if (d.name == "belt.belt_length") derived = &d;
+    ASSERT_NE(derived, nullptr);
+    EXPECT_NEAR(derived->value, length, 1e-12 * length);
+    // The diagram's speed is the driver's (the motor shaft is its reference).
+    for (const auto& row : c.rows)
+        EXPECT_NEAR(row[c.findColumn("belt.belt_passing_rad_per_s")], order * row[c.findColumn("speed")],
+                    1e-12 * order * row[c.findColumn("speed")]);
+    const AnalysisResult m = withScenario("analysis: resonance_map, rotor: drum, speed_min: 5 rad/s, "
+                                          "speed_max: 50 rad/s, points: 10");
+    // resonance_map's rotor is the drum, which turns at 1/3 of the driver
+    // (ω_driver/ω_drum = r2/r1 at steady running, creep aside).
+    const ResultScalar* perRotor = m.find("belt.belt_passing.per_rotor_speed");
+    ASSERT_NE(perRotor, nullptr);
+    EXPECT_NEAR(perRotor->value, order * r2 / r1, 1e-3 * order * r2 / r1);
+}
+
 TEST(Campbell, RefusesASupplyToScaleWithoutAMotor) {
     const std::string text = chain("analysis: campbell, operating_point: supply_scaled, speed_min: 40 rad/s, "
                                    "speed_max: 210 rad/s");
