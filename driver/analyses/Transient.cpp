@@ -215,6 +215,20 @@ HoldCheck checkHold(const Scene& scene, const ModelSpec& spec, const SceneBody& 
             h.worst = 0;
             for (const auto& m : means) h.worst = std::max(h.worst, std::abs(m.mean - h.wHeld));
             h.held = held && h.worst <= h.band;
+            // Still rising, on period means too: the instantaneous speeds at
+            // the end and half-way swing with the load (a stall at 11 % of
+            // running was "still gaining speed" whenever the run ended on a
+            // crest). The last whole period's mean against the mean over one
+            // period centred half-way, both on the integrated trajectory.
+            const double period = means.back().t1 - means.back().t0;
+            const double tLast = 0.5 * (means.back().t0 + means.back().t1);
+            if (period > 0 && tMid - 0.5 * period >= h.tStart && tLast > tMid) {
+                constexpr int kPoints = 256;  // midpoint rule on the step ends' Hermite interpolant
+                double sum = 0;
+                for (int i = 0; i < kPoints; ++i) sum += trace.at(tMid + ((i + 0.5) / kPoints - 0.5) * period);
+                const double gain = h.direction * (means.back().mean - sum / kPoints);
+                h.stillRising = gain / (tLast - tMid) > 0.1 * meanRate && gain > 0.01 * h.band;
+            }
             const auto swing = trace.range(means.front().t0, means.back().t1);
             h.holdText = "as its mean over each of the last " + std::to_string(means.size()) + " whole " + rule.what +
                          " (" + fmt(means.front().t0) + " to " + fmt(means.back().t1) + " s, before " + before +

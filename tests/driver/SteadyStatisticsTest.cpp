@@ -277,6 +277,39 @@ TEST(PeriodicHold, TheVerdictDoesNotDependOnTheSampleInterval) {
     }
 }
 
+// A stall under a periodic load is a stall whatever phase of the ripple
+// the run ends on. J = 1 kg*m^2, linear motor M = 1000·(1 − ω/ω_s) N*m
+// (rated 100 N*m at 1350 rpm, ω_s = 1500 rpm), load 900 N*m mean plus
+// 200 N*m at 5 Hz: ω̄ = ω_s·(1 − 900/1000) = 15.71 rad/s, 11 % of the
+// 141.4 rad/s running speed, with a ±6 rad/s ripple (A = 200/hypot(c, J·P),
+// c = 1000/ω_s). The instantaneous speed at the end against the one
+// half-way called it "still gaining speed" (unfinished, exit 0) when the
+// run ended on a crest (end_time 4.15 s); the period means do not rise.
+TEST(PeriodicHold, AStallIsAStallWhateverPhaseOfTheRippleTheRunEndsOn) {
+    const char* model = R"(format_version: 1
+name: periodic stall
+bodies:
+  - {name: rotor, inertia: 1 kg*m^2, joint: {type: pin, parent: ground}}
+elements:
+  - {type: InductionMotor, name: motor, body: rotor, law: linear, rated_torque: 100 N*m, rated_speed: 1350 rpm,
+     synchronous_speed: 1500 rpm}
+  - {type: PeriodicLoad, name: crush, bodies: [rotor], rows: 1, mean_torque: 900 N*m, amplitudes: [200 N*m],
+     fundamental_frequency: 31.41592653589793 rad/s}
+scenario: {analysis: transient, initial_state: rest, end_time: 4 s, speed_body: rotor}
+outputs: {plots: false}
+)";
+    const double ws = 1500 * M_PI / 30, wbar = ws * (1 - 900.0 / 1000);
+    for (const char* end : {"4 s", "4.05 s", "4.1 s", "4.15 s"}) {
+        const AnalysisResult r =
+            runModelFile(writeModel("periodic_stall.yaml", model), {{"scenario.end_time", end}});
+        EXPECT_EQ(r.verdict, "stalled") << end << ": " << r.verdictText;
+        // The held speed the verdict names is the period mean ω̄.
+        const std::size_t at = r.verdictText.find(" held ");
+        ASSERT_NE(at, std::string::npos) << r.verdictText;
+        EXPECT_NEAR(std::stod(r.verdictText.substr(at + 6)), wbar, 0.01 * wbar) << r.verdictText;
+    }
+}
+
 TEST(SteadyStatistics, BadNamesAndPeriodsAreRefusedWithTheirPlace) {
     auto refused = [&](const std::vector<Override>& o, const std::string& key, const std::string& what) {
         try {
