@@ -56,6 +56,7 @@
 
 #include "driver/SceneBuilder.h"
 #include "driver/analyses/LinearModel.h"
+#include "plugins/scene/DriveCapabilities.h"
 #include "plugins/scene/Format.h"
 #include "plugins/scene/HarmonicForcing.h"
 
@@ -89,6 +90,7 @@ struct Motor {
     std::string name, body;
     double polePairs = 0;
     double synchronous = 0;  ///< ω_c at rated supply [rad/s]
+    std::vector<std::string> keys;  ///< its keys that scale with the supply frequency
 };
 
 /// The train at one speed.
@@ -102,22 +104,22 @@ struct Point {
 class CampbellModel {
 public:
     CampbellModel(const ModelSpec& spec) : m_spec(spec), m_sc(spec.scenario) {
+        m_motorModel = motorModelFromName(m_sc.text("motor_model"));
+        m_base = buildScene(spec);
         // auto: a converter-fed motor's supply is scaled; a direct-on-line
         // machine passes the range only in its start, at its rated supply.
         const std::string rule = m_sc.text("operating_point");
         m_supplyScaled = rule == "supply_scaled";
         if (rule == "auto")
-            for (const auto& e : spec.elements)
-                if ((e.type == "InductionMotor" || e.type == "DqInductionMotor") && e.has("starter") &&
-                    e.text("starter") == "frequency_converter")
+            for (const auto& d : m_base->drives())
+                if (const auto* f = m_base->findElement<SupplyFedDrive>(d.element); f && f->converterFed())
                     m_supplyScaled = true;
-        m_motorModel = motorModelFromName(m_sc.text("motor_model"));
-        m_base = buildScene(spec);
         m_reference = referenceShaft();
         findMotors();
         if (m_supplyScaled && m_motors.empty())
-            throw m_sc.error("operating_point", "supply_scaled: the model has no InductionMotor or DqInductionMotor "
-                                                "whose supply could be scaled; use operating_point: scaled_state");
+            throw m_sc.error("operating_point", "supply_scaled: the model has no motor on an electrical supply "
+                                                "(an induction motor) whose supply could be scaled; use "
+                                                "operating_point: scaled_state");
         m_steady = solveSteadyState(*m_base, initialState(*m_base, spec));
         m_speed0 = std::abs(pinSpeed(m_steady, m_base->findBody(m_reference)->mobod));
         if (!(m_speed0 > 0))
@@ -215,54 +217,43 @@ private:
         return m_base->bodies().front().name;
     }
 
+    /// The drives on an electrical supply (SupplyFedDrive), in the model's
+    /// order: their pole pairs on scenario.supply_frequency, their rated
+    /// synchronous speed and the keys a supply scale multiplies.
     void findMotors() {
         const double grid = m_sc.number("supply_frequency") * kTwoPi;  // [rad/s]
         for (std::size_t i = 0; i < m_spec.elements.size(); ++i) {
             const ElementSpec& e = m_spec.elements[i];
-            if (e.type == "InductionMotor") {
-                // Its pole pairs from the supply frequency: the law knows only
-                // the synchronous speed.
-                const double wc = e.number("synchronous_speed");
-                const double p = grid / wc;
-                if (!(std::abs(p - std::round(p)) <= 0.02 * p) || std::round(p) < 1)
-                    throw m_sc.error("supply_frequency",
-                                     "InductionMotor '" + e.name + "': synchronous speed " + formatNumber(wc * kRpm) +
-                                         " rpm is not " + formatNumber(grid / kTwoPi) +
-                                         " Hz over a whole number of pole pairs; set supply_frequency to the supply it is rated for");
-                m_motors.push_back({i, e.name, e.text("body"), std::round(p), wc});
-            } else if (e.type == "DqInductionMotor") {
-                const double f = e.number("frequency") * kTwoPi;
-                double p = e.number("pole_pairs");
-                const bool datasheet = e.has("rated_power") && e.number("rated_power") > 0;
-                if (datasheet && !(e.params.count("pole_pairs") && e.params.at("pole_pairs").given) &&
-                    e.number("rated_speed") > 0)
-                    p = std::max(1.0, std::floor(f / e.number("rated_speed")));
-                if (datasheet && m_supplyScaled)
-                    throw m_sc.error("operating_point",
-                                     "supply_scaled scales a DqInductionMotor's circuit (frequency and phase_voltage); "
-                                     "'" + e.name + "' is fitted to a datasheet at its rated supply: give its circuit, "
-                                     "or use operating_point: scaled_state");
-                m_motors.push_back({i, e.name, e.text("body"), p, f / p});
+            const SupplyFedDrive* f = m_base->findElement<SupplyFedDrive>(e.name);
+            if (!f) continue;
+            double p = 0;
+            try {
+                p = f->polePairsOn(grid);
+            } catch (const std::invalid_argument& why) {
+                throw m_sc.error("supply_frequency", "'" + e.name + "': " + why.what() +
+                                                         "; set supply_frequency to the supply it is rated for");
             }
+            const std::vector<std::string> keys = f->supplyFrequencyKeys();
+            if (m_supplyScaled)
+                if (const std::string why = f->whySupplyNotScalable(); !why.empty()) {
+                    std::string list;
+                    for (const auto& k : keys) list += (list.empty() ? "" : " and ") + k;
+                    throw m_sc.error("operating_point", "supply_scaled scales '" + e.name + "''s " + list + ": " +
+                                                            why + ", or use operating_point: scaled_state");
+                }
+            m_motors.push_back({i, e.name, e.text("body"), p, f->ratedSynchronousSpeed(), keys});
         }
     }
 
     ModelSpec scaledSpec(double a) const {
         ModelSpec s = m_spec;
-        auto scale = [&](ElementSpec& e, const char* key) {
-            auto it = e.params.find(key);
-            if (it == e.params.end()) return;
-            it->second.number *= a;
-            for (double& v : it->second.numbers) v *= a;
-        };
         for (const Motor& m : m_motors) {
             ElementSpec& e = s.elements[m.element];
-            if (e.type == "InductionMotor") {
-                for (const char* key : {"synchronous_speed", "rated_speed", "pull_up_speed", "breakdown_speed",
-                                        "curve_speeds", "switch_speeds"})
-                    scale(e, key);
-            } else {
-                for (const char* key : {"frequency", "phase_voltage"}) scale(e, key);
+            for (const std::string& key : m.keys) {
+                auto it = e.params.find(key);
+                if (it == e.params.end()) continue;
+                it->second.number *= a;
+                for (double& v : it->second.numbers) v *= a;
             }
         }
         return s;

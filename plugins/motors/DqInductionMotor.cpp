@@ -633,6 +633,7 @@ void buildDqInductionMotor(const ElementSpec& spec, Scene& scene) {
             p.rotorLeakage2 = k * fit.circuit.rotorLeakages[1];
         }
         p.polePairs = fit.polePairs;
+        p.fittedToDatasheet = true;
         const std::string per = starterName == "star_delta" ? " (per winding in delta)" : " (per phase of the equivalent star)";
         scene.addDerivedValue({spec.name + ".stator_resistance", p.statorResistance, "ohm", "fitted Rs" + per});
         scene.addDerivedValue({spec.name + ".stator_leakage_inductance", p.statorLeakage, "H", "fitted Lsσ" + per});

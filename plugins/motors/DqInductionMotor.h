@@ -28,6 +28,9 @@ struct DqInductionMotorParams {
     double rotorResistance2 = 0, rotorLeakage2 = 0;
     double mainInductance = 0;     ///< Lm [H], > 0
     int polePairs = 1;             ///< p [-], >= 1
+    /// The circuit was fitted to a datasheet at its rated supply (scaling
+    /// frequency and phase_voltage then does not scale the fitted motor).
+    bool fittedToDatasheet = false;
     double phaseVoltage = 0;       ///< V [V] rms phase voltage, > 0
     double frequency = 0;          ///< f [Hz] supply frequency, > 0
     /// Every starter of InductionMotor (Starter.h): star_delta and
@@ -122,8 +125,24 @@ struct DqInductionMotorParams {
  */
 class DqInductionMotor : public SimTK::Force::Custom::Implementation,
                          public ElectricalStates,
-                         public SupplyVoltageDip {
+                         public SupplyVoltageDip,
+                         public SupplyFedDrive {
 public:
+    /// SupplyFedDrive: its own pole pairs and supply frequency.
+    double polePairsOn(double) const override { return m_params.polePairs; }
+    double ratedSynchronousSpeed() const override {
+        return 2 * SimTK::Pi * m_params.frequency / m_params.polePairs;
+    }
+    std::vector<std::string> supplyFrequencyKeys() const override { return {"frequency", "phase_voltage"}; }
+    std::string whySupplyNotScalable() const override {
+        return m_params.fittedToDatasheet ? "its circuit is fitted to a datasheet at its rated supply: give its "
+                                            "circuit (frequency, phase_voltage and the impedances)"
+                                          : "";
+    }
+    bool converterFed() const override {
+        return m_params.starter.kind == StarterParams::Kind::FrequencyConverter;
+    }
+
     /// Throws std::invalid_argument naming the parameter that is out of range.
     DqInductionMotor(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& shaft,
                      const DqInductionMotorParams& params);

@@ -257,6 +257,17 @@ void InductionMotor::setOn(SimTK::State& state, bool on) const {
     SimTK::Value<bool>::updDowncast(m_forces.updDiscreteVariable(state, m_onIndex)) = on;
 }
 
+double InductionMotor::polePairsOn(double supply) const {
+    // The law knows only its synchronous speed: p from the supply.
+    const double wc = m_params.synchronousSpeed;
+    const double p = supply / wc;
+    if (!(std::abs(p - std::round(p)) <= 0.02 * p) || std::round(p) < 1)
+        throw std::invalid_argument("synchronous speed " + formatNumber(wc * 30 / SimTK::Pi) + " rpm is not " +
+                                    formatNumber(supply / (2 * SimTK::Pi)) +
+                                    " Hz over a whole number of pole pairs");
+    return std::round(p);
+}
+
 double InductionMotor::calcTorque(const SimTK::State& state) const {
     if (!isOn(state)) return 0;
     return torqueAtSpeed(m_shaft.getOneU(state, SimTK::MobilizerUIndex(0)), supply(state));

@@ -139,7 +139,9 @@ std::string describeRatedLosses(const TorqueSpeedCurveParams& curve, double rate
  * InductionMotorTest and StarterTest against the closed forms above, and by
  * the start oracle (validation/oracles/StartOracle.h).
  */
-class InductionMotor : public SimTK::Force::Custom::Implementation, public StaticTorqueSpeedCurve {
+class InductionMotor : public SimTK::Force::Custom::Implementation,
+                       public StaticTorqueSpeedCurve,
+                       public SupplyFedDrive {
 public:
     /// Throws std::invalid_argument naming the parameter that is out of range.
     InductionMotor(const SimTK::GeneralForceSubsystem& forces, const SimTK::MobilizedBody& shaft,
@@ -147,6 +149,15 @@ public:
 
     /// Natural torque (rated supply, DOL) at shaft speed ω [rad/s] [N*m].
     double torqueAtSpeed(double omega) const override { return m_curve.torque(omega); }
+    /// SupplyFedDrive: p = supply/ω_c, refused unless within 2 % of a whole number.
+    double polePairsOn(double supply) const override;
+    double ratedSynchronousSpeed() const override { return m_params.synchronousSpeed; }
+    /// Every speed of the law and of the starter.
+    std::vector<std::string> supplyFrequencyKeys() const override {
+        return {"synchronous_speed", "rated_speed", "pull_up_speed", "breakdown_speed", "curve_speeds", "switch_speeds"};
+    }
+    std::string whySupplyNotScalable() const override { return ""; }
+    bool converterFed() const override { return isConverter(); }
     /// Torque at shaft speed ω [rad/s] under a supply state [N*m].
     double torqueAtSpeed(double omega, const SupplyState& supply) const;
     /// Line current at ω under a supply state [A] (NaN without current data).

@@ -9,6 +9,7 @@
 #include <Simbody.h>
 
 #include <string>
+#include <vector>
 
 namespace milldyn {
 
@@ -62,6 +63,30 @@ public:
     virtual double voltageDipLimit() const = 0;
     /// The supply in words for the report ("S_k = 40 MVA, X/R = 10").
     virtual std::string supplyDescription() const = 0;
+};
+
+/**
+ * A motor on an electrical supply (its pole pairs, its synchronous speed)
+ * whose operating point a frequency converter sets by scaling the supply:
+ * the Campbell diagram's supply lines and its operating_point
+ * supply_scaled, which scales the keys supplyFrequencyKeys() names by one
+ * factor.
+ */
+class SupplyFedDrive {
+public:
+    virtual ~SupplyFedDrive() = default;
+    /// Pole pairs p [1] on a supply of angular frequency `supply` [rad/s]
+    /// (a law that knows only its synchronous speed takes p from it).
+    /// Throws std::invalid_argument saying why the drive does not fit it.
+    virtual double polePairsOn(double supply) const = 0;
+    /// Synchronous speed at the rated supply [rad/s].
+    virtual double ratedSynchronousSpeed() const = 0;
+    /// The element's keys proportional to the supply frequency.
+    virtual std::vector<std::string> supplyFrequencyKeys() const = 0;
+    /// "" when scaling those keys scales the drive, else why not.
+    virtual std::string whySupplyNotScalable() const = 0;
+    /// Fed through a frequency converter (its starter).
+    virtual bool converterFed() const = 0;
 };
 
 }  // namespace milldyn

@@ -245,6 +245,20 @@ TEST(Campbell, RefusesASupplyToScaleWithoutAMotor) {
     EXPECT_THROW(runAnalysis(readModelText(noMotor, "chain.yaml", defaultModelReader())), SpecError);
 }
 
+// 1500 rpm synchronous on 47 Hz is 1.88 pole pairs: the motor does not fit
+// that supply, refused at scenario.supply_frequency naming the motor.
+TEST(Campbell, RefusesASupplyTheMotorDoesNotFitAtSupplyFrequency) {
+    try {
+        run("analysis: campbell, supply_frequency: 47 Hz, speed_min: 40 rad/s, speed_max: 210 rad/s, points: 12");
+        ADD_FAILURE() << "47 Hz accepted";
+    } catch (const SpecError& e) {
+        EXPECT_EQ(e.key(), "scenario.supply_frequency");
+        EXPECT_NE(std::string(e.what()).find("'motor': synchronous speed 1500 rpm is not 47 Hz over a whole number"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 // Orders of another shaft are referred through the train's speed ratios.
 // Motor shaft a (J1) –k– pinion b (Jb), a rigid gear pair (20/80 teeth,
 // pitch radii 0.1/0.4 m: ω_c = −ω_b/4) to the wheel c (Jc) with the

@@ -32,9 +32,6 @@ KNOWN = {
     # would serve; it needs AnalysisResult below the plugins).
     "driver/analyses/Analysis.cpp": {"SegmentCharge"},
     "driver/analyses/Transient.cpp": {"SegmentCharge"},
-    # Pole pairs from the supply and the keys scaled under supply_scaled (a
-    # supply-scalable drive capability in DriveCapabilities.h would serve).
-    "driver/analyses/Campbell.cpp": {"InductionMotor", "DqInductionMotor"},
     # Energy categories by element type (a category field on EnergyFlow
     # would serve).
     "plugins/scene/EnergyMeter.cpp": {"InductionMotor", "DqInductionMotor", "JournalFriction", "ShaftBearings", "Brake",
