@@ -588,7 +588,8 @@ struct TrajectoryRecord {
           drivesOnOneShaft(distinctShafts(spec, scene, ProbeRole::DriveTorque) <= 1),
           peakDrive([&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::DriveTorque); }),
           peaks(scene.probes().size()),
-          windowStatistics(statisticsOf(spec, scene, speedBody), tWindowStart, tWindowEnd, rule),
+          statistics(statisticsLayout(spec, scene, speedBody)),
+          windowStatistics(statistics.quantities, tWindowStart, tWindowEnd, rule),
           sequenceEnd(scene.startSequences().size()) {
         const auto& probes = scene.probes();
         // Torques on different shafts never add (issue 32): one drive peak
@@ -603,14 +604,6 @@ struct TrajectoryRecord {
                 std::find(spec.outputs.peaks.begin(), spec.outputs.peaks.end(), probes[i].name) !=
                     spec.outputs.peaks.end())
                 peaks[i].emplace([&probes, i](const SimTK::State& s) { return probes[i].value(s); });
-        // The statistics' order, as statisticsOf made it: the steady
-        // quantities, the outputs.statistics names, then each load and drive
-        // torque alone (torques on different shafts are reported one by one).
-        for (const std::string& name : spec.outputs.statistics)
-            if (const auto q = findQuantity(scene, name)) statisticsNamed.push_back(*q);
-        std::size_t next = kSteadyQuantities + statisticsNamed.size();
-        for (ProbeRole role : {ProbeRole::ResistanceTorque, ProbeRole::DriveTorque})
-            for (std::size_t i : probesOfRole(scene, role)) probeStatistic[i] = next++;
         for (const std::string& name : spec.outputs.peaks)
             if (const auto q = findQuantity(scene, name); q && !q->body.empty())
                 speedPeaks.emplace_back(*q, SignedPeaks(q->f));
@@ -657,21 +650,32 @@ struct TrajectoryRecord {
             windowStart = sim.trajectoryAt(std::max(m_tWindowStart, sim.trajectoryFrom()));
     }
 
-    /// The steady quantities (kSteady*), every outputs.statistics name, then
-    /// each load and drive torque alone.
-    static std::vector<WindowStatistics::Fn> statisticsOf(const ModelSpec& spec, const Scene& scene,
-                                                          const SceneBody& speedBody) {
-        std::vector<WindowStatistics::Fn> f = {
-            [&speedBody](const SimTK::State& s) { return pinSpeed(s, speedBody.mobod); },
-            [&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::ResistanceTorque); },
-            [&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::ResistancePower); },
-            [&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::DriveTorque); }};
+    /// What the window statistics follow, in order: the steady quantities
+    /// (kSteady*), every outputs.statistics name, then each load and drive
+    /// torque alone (torques on different shafts are reported one by one).
+    struct StatisticsLayout {
+        std::vector<WindowStatistics::Fn> quantities;
+        std::vector<NamedQuantity> named;                   ///< outputs.statistics
+        std::map<std::size_t, std::size_t> probeStatistic;  ///< probe index -> index in quantities
+    };
+    static StatisticsLayout statisticsLayout(const ModelSpec& spec, const Scene& scene, const SceneBody& speedBody) {
+        StatisticsLayout l;
+        l.quantities = {[&speedBody](const SimTK::State& s) { return pinSpeed(s, speedBody.mobod); },
+                        [&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::ResistanceTorque); },
+                        [&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::ResistancePower); },
+                        [&scene](const SimTK::State& s) { return sumProbes(scene, s, ProbeRole::DriveTorque); }};
         for (const std::string& name : spec.outputs.statistics)
-            if (const auto q = findQuantity(scene, name)) f.push_back(q->f);
+            if (const auto q = findQuantity(scene, name)) {
+                l.named.push_back(*q);
+                l.quantities.push_back(q->f);
+            }
         for (ProbeRole role : {ProbeRole::ResistanceTorque, ProbeRole::DriveTorque})
-            for (std::size_t i : probesOfRole(scene, role))
-                f.push_back([&probes = scene.probes(), i](const SimTK::State& s) { return probes[i].value(s); });
-        return f;
+            for (std::size_t i : probesOfRole(scene, role)) {
+                l.probeStatistic[i] = l.quantities.size();
+                l.quantities.push_back(
+                    [&probes = scene.probes(), i](const SimTK::State& s) { return probes[i].value(s); });
+            }
+        return l;
     }
 
 private:
@@ -686,9 +690,8 @@ public:
     std::vector<PeakTracker> drivePeaks;
     std::vector<std::optional<SignedPeaks>> peaks;  ///< per probe: couplings and outputs.peaks
     SpeedTrace trace;                               ///< speed_body's speed at every step end
+    const StatisticsLayout statistics;
     WindowStatistics windowStatistics;
-    std::vector<NamedQuantity> statisticsNamed;          ///< outputs.statistics
-    std::map<std::size_t, std::size_t> probeStatistic;  ///< probe index -> statistics index
     std::vector<std::pair<NamedQuantity, SignedPeaks>> speedPeaks;
     std::vector<std::pair<std::string, PeakTracker>> criticalFractions;
     std::vector<std::optional<double>> sequenceEnd;  ///< when each starting sequence first stood finished
@@ -729,7 +732,7 @@ struct SteadyReport {
         const std::string suffix = reached ? "" : "_at_end";
         const std::string steadyAt = periodMeans() ? "averaged over " + windowText() : at;
         auto steadyProbe = [&](std::size_t probe) {
-            return steadyValue(record.probeStatistic.at(probe), scene.probes()[probe].value(steady));
+            return steadyValue(record.statistics.probeStatistic.at(probe), scene.probes()[probe].value(steady));
         };
         auto instantProbe = [&](std::size_t probe) { return scene.probes()[probe].value(steady); };
         const double omegaSteady = steadyValue(kSteadySpeed, pinSpeed(steady, speedBody.mobod));
@@ -1030,7 +1033,7 @@ AnalysisResult runTransient(const ModelSpec& spec, const ProgressFn& progress, c
                               periodWhy};
     const double omegaSteady = report.add(result);
     addTrajectoryPeaks(*scene, spec, record, steady, at, result);
-    addSteadyStatistics(*scene, speedBody, record.windowStatistics, kSteadyQuantities, record.statisticsNamed,
+    addSteadyStatistics(*scene, speedBody, record.windowStatistics, kSteadyQuantities, record.statistics.named,
                         periodRule, periodWhy, report.windowText(), reached, steady, at, result);
     addSpeedPeaksAndChargeWarnings(record, steady, at, result);
     addMotorReports(*scene, last, result);

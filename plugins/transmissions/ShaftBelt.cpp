@@ -171,8 +171,7 @@ void buildShaftBelt(const ElementSpec& spec, Scene& scene) {
     // common external tangents) and its passing frequency: one point of the
     // belt passes the driver's sheave 2π·r1/L times per revolution of the
     // driver, an excitation order the Campbell diagram and resonance_map list.
-    const BeltSpans spans = calcBeltSpans(pinCentre(driver->mobod), r1, pinCentre(driven->mobod), r2);
-    const double length = r1 * spans.wrapFixed + r2 * spans.wrapDrum + 2 * spans.centreDistance * std::cos(spans.beta);
+    const double length = impl->getBeltLength();
     scene.addDerivedValue({n + ".belt_length", length, "m",
                            "pitch length of the open belt, r1·θ1 + r2·θ2 + 2·l·cos β (l the pins' distance)"});
     scene.addOrderExcitation({n + ".belt_passing", driver->name, 2 * Pi * r1 / length});

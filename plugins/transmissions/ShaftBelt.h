@@ -7,6 +7,8 @@
 #include "plugins/scene/Scene.h"
 #include "plugins/transmissions/BeltDrive.h"
 
+#include <cmath>
+
 namespace milldyn {
 
 struct ShaftBeltParams {
@@ -56,6 +58,11 @@ public:
     double calcStretch(const SimTK::State& s) const { return calcFeed(s) - getSlip(s); }
     double getGripRatio() const { return m_grip; }     ///< E = e^(μθ) [-]
     double getWrap() const { return m_wrap; }           ///< θ on the small sheave [rad]
+    /// Pitch length of the open belt, L = r1·θ1 + r2·θ2 + 2·l·cos β [m].
+    double getBeltLength() const {
+        return m_p.driverSheaveRadius * m_spans.wrapFixed + m_p.drivenSheaveRadius * m_spans.wrapDrum +
+               2 * m_spans.centreDistance * std::cos(m_spans.beta);
+    }
     double calcDrivenTorque(const SimTK::State& s) const;  ///< on the driven shaft [N*m]
     double calcDriverTorque(const SimTK::State& s) const;  ///< the belt's resisting torque on the driver [N*m]
     double calcDissipatedPower(const SimTK::State& s) const;
